@@ -1,0 +1,35 @@
+/// @file dynamics.hpp
+/// Joint-space dynamics A(q) qdd + b(q, qdot) + g(q) = tau of a Model.
+/// Each function fills its member of Data and returns a reference to it; none allocates.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "opspace/model.hpp"
+
+namespace opspace {
+
+/// A(q), the joint-space mass matrix, by the composite-rigid-body algorithm (data.A).
+const Eigen::MatrixXd& crba(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q);
+
+/// g(q), the joint torques that balance gravity (data.g).
+const Eigen::VectorXd& generalized_gravity(const Model& model, Data& data,
+                                           const Eigen::Ref<const Eigen::VectorXd>& q);
+
+/// b(q, qdot), the Coriolis and centrifugal torques, by recursive Newton-Euler (data.b).
+const Eigen::VectorXd& coriolis_centrifugal(const Model& model, Data& data,
+                                            const Eigen::Ref<const Eigen::VectorXd>& q,
+                                            const Eigen::Ref<const Eigen::VectorXd>& qdot);
+
+/// tau = A qdd + b + g, by recursive Newton-Euler (data.tau).
+const Eigen::VectorXd& rnea(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q,
+                            const Eigen::Ref<const Eigen::VectorXd>& qdot,
+                            const Eigen::Ref<const Eigen::VectorXd>& qdd);
+
+/// qdd = A^-1 (tau - b - g) (data.qdd; data.A and data.A_llt are updated too).
+const Eigen::VectorXd& forward_dynamics(const Model& model, Data& data,
+                                        const Eigen::Ref<const Eigen::VectorXd>& q,
+                                        const Eigen::Ref<const Eigen::VectorXd>& qdot,
+                                        const Eigen::Ref<const Eigen::VectorXd>& tau);
+
+}  // namespace opspace

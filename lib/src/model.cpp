@@ -1,0 +1,2 @@
+// Placeholder so the library links before the model issue lands; replaced by the model work.
+#include "opspace/model.hpp"

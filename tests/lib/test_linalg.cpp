@@ -1,0 +1,172 @@
+// Generalized inverses and projectors (linalg.hpp), checked against the identities that
+// define them: the four Penrose conditions, J J_inv = I for a right inverse, the closed
+// form of the weighted inverse, and the properties of a projector.
+#include <doctest/doctest.h>
+
+#include <Eigen/Dense>
+#include <stdexcept>
+#include <string>
+
+#include "opspace/linalg.hpp"
+#include "support/random.hpp"
+
+using opspace::testing::Random;
+
+namespace {
+
+// Shapes of the course: PP task (1x2), PUMA position task (3x6), iiwa full task (6x7), a
+// square arm (3x3) and a tall matrix (7x3) for the pseudo-inverse's other side.
+const std::pair<int, int> kShapes[] = {{1, 2}, {3, 6}, {6, 7}, {3, 3}, {7, 3}};
+
+// Round-off of an SVD of a well-conditioned random matrix is ~1e-15 times its norm; the
+// random matrices here have condition numbers well under 1e3, so 1e-10 leaves a margin.
+constexpr double kTol = 1e-10;
+
+std::string shape_name(const Eigen::MatrixXd& M) {
+  return std::to_string(M.rows()) + "x" + std::to_string(M.cols());
+}
+
+}  // namespace
+
+TEST_CASE("the pseudo-inverse satisfies the four Penrose conditions") {
+  Random rng(11);
+  for (const auto& [m, n] : kShapes) {
+    for (int trial = 0; trial < 5; ++trial) {
+      const Eigen::MatrixXd J = rng.matrix(m, n);
+      const Eigen::MatrixXd P = opspace::pseudo_inverse(J);
+      CAPTURE(shape_name(J));
+      REQUIRE(P.rows() == n);
+      REQUIRE(P.cols() == m);
+      CHECK((J * P * J - J).norm() < kTol);                            // J J+ J = J
+      CHECK((P * J * P - P).norm() < kTol);                            // J+ J J+ = J+
+      CHECK(((J * P).transpose() - J * P).norm() < kTol);              // (J J+)^T = J J+
+      CHECK(((P * J).transpose() - P * J).norm() < kTol);              // (J+ J)^T = J+ J
+    }
+  }
+}
+
+TEST_CASE("a full-row-rank Jacobian has J J_inv = I for every right inverse") {
+  Random rng(12);
+  for (const auto& [m, n] : kShapes) {
+    if (m > n) continue;  // a tall matrix has no right inverse
+    const Eigen::MatrixXd J = rng.matrix(m, n);
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(m, m);
+    CAPTURE(shape_name(J));
+    SUBCASE("pseudo-inverse") { CHECK((J * opspace::pseudo_inverse(J) - I).norm() < kTol); }
+    SUBCASE("weighted inverse") { CHECK((J * opspace::weighted_inverse(J, rng.spd(n)) - I).norm() < kTol); }
+    SUBCASE("dynamically consistent inverse") {
+      CHECK((J * opspace::dynamically_consistent_inverse(J, rng.spd(n)) - I).norm() < kTol);
+    }
+  }
+}
+
+TEST_CASE("the pseudo-inverse of a full-row-rank J equals J^T (J J^T)^-1") {
+  // The closed form of problem 1a(iv), evaluated with a plain LU inverse.
+  Random rng(13);
+  for (const auto& [m, n] : kShapes) {
+    if (m > n) continue;
+    const Eigen::MatrixXd J = rng.matrix(m, n);
+    const Eigen::MatrixXd closed_form = J.transpose() * (J * J.transpose()).inverse();
+    CAPTURE(shape_name(J));
+    CHECK((opspace::pseudo_inverse(J) - closed_form).norm() < kTol);
+  }
+}
+
+TEST_CASE("the weighted inverse equals W^-1 J^T (J W^-1 J^T)^-1") {
+  Random rng(14);
+  SUBCASE("random SPD weights, closed form with plain inverses") {
+    for (const auto& [m, n] : kShapes) {
+      if (m > n) continue;
+      const Eigen::MatrixXd J = rng.matrix(m, n);
+      const Eigen::MatrixXd W = rng.spd(n);
+      const Eigen::MatrixXd Winv = W.inverse();
+      const Eigen::MatrixXd closed_form = Winv * J.transpose() * (J * Winv * J.transpose()).inverse();
+      CAPTURE(shape_name(J));
+      CHECK((opspace::weighted_inverse(J, W) - closed_form).norm() < kTol);
+    }
+  }
+  SUBCASE("the identity weight gives the pseudo-inverse") {
+    const Eigen::MatrixXd J = rng.matrix(3, 6);
+    CHECK((opspace::weighted_inverse(J, Eigen::MatrixXd::Identity(6, 6)) - opspace::pseudo_inverse(J)).norm() < kTol);
+  }
+  SUBCASE("W = diag(w1, w2) on J = [1 1] gives [w2, w1] / (w1 + w2) (problem 1a(v))") {
+    const double w1 = 3.0, w2 = 7.0;
+    const Eigen::MatrixXd J = Eigen::RowVector2d(1.0, 1.0);
+    const Eigen::Vector2d expected(w2 / (w1 + w2), w1 / (w1 + w2));
+    CHECK((opspace::weighted_inverse(J, Eigen::Vector2d(w1, w2).asDiagonal().toDenseMatrix()) - expected).norm() < kTol);
+  }
+}
+
+TEST_CASE("the dynamically consistent inverse makes the null space A-orthogonal to the task") {
+  // Jbar's defining property: J A^-1 N^T = 0, so torques N^T tau0 cause no task acceleration.
+  Random rng(15);
+  const Eigen::MatrixXd J = rng.matrix(3, 6);
+  const Eigen::MatrixXd A = rng.spd(6);
+  const Eigen::MatrixXd N = opspace::nullspace_projector(J, opspace::dynamically_consistent_inverse(J, A));
+  CHECK((J * A.inverse() * N.transpose()).norm() < kTol);
+}
+
+TEST_CASE("a null-space projector is idempotent and annihilates the task") {
+  Random rng(16);
+  for (const auto& [m, n] : kShapes) {
+    if (m > n) continue;
+    const Eigen::MatrixXd J = rng.matrix(m, n);
+    const Eigen::MatrixXd N = opspace::nullspace_projector(J, opspace::weighted_inverse(J, rng.spd(n)));
+    CAPTURE(shape_name(J));
+    CHECK((N * N - N).norm() < kTol);  // a projector: N^2 = N
+    CHECK((J * N).norm() < kTol);      // joint motion N dq0 leaves the task still
+  }
+}
+
+TEST_CASE("a rank-deficient Jacobian gives finite inverses, never inf or NaN") {
+  // Two identical rows: rank 1 of 2. Behaviour documented in linalg.hpp: the zero singular
+  // value is dropped, so J J_inv is the projector onto range(J) = span([1, 1]^T).
+  Eigen::MatrixXd J(2, 3);
+  J << 1.0, 2.0, 3.0, 1.0, 2.0, 3.0;
+  const Eigen::Matrix2d range_projector = 0.5 * Eigen::Matrix2d::Ones();
+  Random rng(17);
+  SUBCASE("pseudo-inverse") {
+    const Eigen::MatrixXd P = opspace::pseudo_inverse(J);
+    CHECK(P.allFinite());
+    CHECK((J * P - range_projector).norm() < kTol);
+  }
+  SUBCASE("weighted inverse") {
+    const Eigen::MatrixXd P = opspace::weighted_inverse(J, rng.spd(3));
+    CHECK(P.allFinite());
+    CHECK((J * P - range_projector).norm() < kTol);
+  }
+  SUBCASE("a zero Jacobian") {
+    CHECK(opspace::pseudo_inverse(Eigen::MatrixXd::Zero(3, 6)).isZero());
+    CHECK(opspace::weighted_inverse(Eigen::MatrixXd::Zero(3, 6), rng.spd(6)).isZero());
+  }
+}
+
+TEST_CASE("bad input throws an error that names the problem") {
+  Random rng(18);
+  const Eigen::MatrixXd J = rng.matrix(3, 6);
+  SUBCASE("a weight of the wrong size names both sizes") {
+    CHECK_THROWS_WITH_AS(opspace::weighted_inverse(J, rng.spd(5)),
+                         doctest::Contains("W (J is 3x6) is 5x5, expected 6x6"), std::invalid_argument);
+  }
+  SUBCASE("a non-symmetric weight") {
+    Eigen::MatrixXd W = rng.spd(6);
+    W(0, 1) += 0.5;
+    CHECK_THROWS_WITH_AS(opspace::weighted_inverse(J, W), doctest::Contains("not symmetric"),
+                         std::invalid_argument);
+  }
+  SUBCASE("an indefinite weight") {
+    Eigen::MatrixXd W = Eigen::MatrixXd::Identity(6, 6);
+    W(2, 2) = -1.0;
+    CHECK_THROWS_WITH_AS(opspace::weighted_inverse(J, W), doctest::Contains("not positive definite"),
+                         std::invalid_argument);
+  }
+  SUBCASE("a projector from an inverse of the wrong shape") {
+    CHECK_THROWS_WITH_AS(opspace::nullspace_projector(J, rng.matrix(3, 6)),
+                         doctest::Contains("J_inv (J is 3x6) is 3x6, expected 6x3"), std::invalid_argument);
+  }
+  SUBCASE("NaN in J") {
+    Eigen::MatrixXd bad = J;
+    bad(1, 1) = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_WITH_AS(opspace::pseudo_inverse(bad), doctest::Contains("NaN"), std::invalid_argument);
+  }
+}
