@@ -5,7 +5,7 @@
 /// link 2 riding on link 1; the task is x_ee = d1 + d2.
 #pragma once
 
-#include <Eigen/Core>
+#include <Eigen/Dense>  // everything a student may need: inverse(), solvers, decompositions
 
 namespace opspace::hw2::p1a {
 

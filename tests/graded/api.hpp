@@ -1,0 +1,39 @@
+/// @file api.hpp
+/// The student-written functions, gathered as function pointers so that the graded suite
+/// is compiled once and run against exercises/, solutions/ or a known-wrong variant.
+#pragma once
+
+#include <opspace/hw2/p1a.hpp>
+
+namespace opspace::grading {
+
+/// Problem 1a (lib/include/opspace/hw2/p1a.hpp).
+struct P1aApi {
+  decltype(&hw2::p1a::degrees_of_freedom) degrees_of_freedom;
+  decltype(&hw2::p1a::mass_matrix) mass_matrix;
+  decltype(&hw2::p1a::task_jacobian) task_jacobian;
+  decltype(&hw2::p1a::pseudo_inverse) pseudo_inverse;
+  decltype(&hw2::p1a::weighted_inverse) weighted_inverse;
+  decltype(&hw2::p1a::inertia_weighted_inverse) inertia_weighted_inverse;
+  decltype(&hw2::p1a::nullspace_projector) nullspace_projector;
+  decltype(&hw2::p1a::inverse_kinematics_step) inverse_kinematics_step;
+  decltype(&hw2::p1a::split_displacement) split_displacement;
+};
+
+/// Every graded function of problem set 2.
+struct Hw2Api {
+  P1aApi p1a;
+};
+
+/// The implementation linked into this program: exercises/ in hw2-grade, solutions/ in
+/// hw2-grade-sol. Inline, so that each program binds the library it links.
+inline Hw2Api linked_api() {
+  namespace p1a = hw2::p1a;
+  Hw2Api api{};
+  api.p1a = {&p1a::degrees_of_freedom, &p1a::mass_matrix,       &p1a::task_jacobian,
+             &p1a::pseudo_inverse,     &p1a::weighted_inverse,  &p1a::inertia_weighted_inverse,
+             &p1a::nullspace_projector, &p1a::inverse_kinematics_step, &p1a::split_displacement};
+  return api;
+}
+
+}  // namespace opspace::grading

@@ -1,0 +1,59 @@
+#include "report.hpp"
+
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+namespace opspace::grading {
+
+namespace {
+
+std::string points(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+std::string status(const TestResult& r) {
+  if (r.score >= r.test->points) return "PASS";
+  return r.score > 0.0 ? "PART" : "FAIL";
+}
+
+}  // namespace
+
+ProblemResult grade(const Problem& problem, const Hw2Api& api) {
+  ProblemResult out;
+  out.problem = &problem;
+  out.results = run_tests(problem.tests, api);
+  for (const TestResult& r : out.results) {
+    out.score += r.score;
+    out.max_score += r.test->points;
+  }
+  return out;
+}
+
+void print_report(std::ostream& out, const std::vector<ProblemResult>& problems) {
+  double total = 0.0, total_max = 0.0;
+  for (const ProblemResult& p : problems) {
+    out << "\nProblem " << p.problem->key << ": " << p.problem->title << "\n";
+    for (const TestResult& r : p.results) {
+      const std::string score = points(r.score) + "/" + points(r.test->points);
+      out << "  " << status(r) << "  " << score << std::string(score.size() < 6 ? 6 - score.size() : 1, ' ')
+          << r.test->name << "\n";
+      if (r.score >= r.test->points) continue;
+      for (const std::string& finding : r.findings) out << "          - " << finding << "\n";
+      out << "          hint: " << r.test->hint << "\n";
+    }
+    out << "  Problem " << p.problem->key << ": " << points(p.score) << " / " << points(p.max_score)
+        << " points\n";
+    total += p.score;
+    total_max += p.max_score;
+  }
+  out << "\nScore per problem:\n";
+  for (const ProblemResult& p : problems) {
+    out << "  " << p.problem->key << "  " << points(p.score) << " / " << points(p.max_score) << "\n";
+  }
+  out << "Total: " << points(total) << " / " << points(total_max) << " points\n";
+}
+
+}  // namespace opspace::grading

@@ -1,0 +1,27 @@
+/// @file report.hpp
+/// Grading a problem and printing the score table a student reads.
+#pragma once
+
+#include <iosfwd>
+#include <vector>
+
+#include "suite.hpp"
+
+namespace opspace::grading {
+
+/// The results of one problem's tests, with the points earned and available.
+struct ProblemResult {
+  const Problem* problem = nullptr;
+  std::vector<TestResult> results;
+  double score = 0.0;
+  double max_score = 0.0;
+};
+
+/// Runs every test of `problem` against `api`.
+ProblemResult grade(const Problem& problem, const Hw2Api& api);
+
+/// Prints one block per problem (each test's status, points, findings and hint), the score
+/// per problem and the total.
+void print_report(std::ostream& out, const std::vector<ProblemResult>& problems);
+
+}  // namespace opspace::grading

@@ -1,0 +1,25 @@
+/// @file suite.hpp
+/// The graded suite of problem set 2: one function per problem, one file per problem.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grading.hpp"
+
+namespace opspace::grading {
+
+/// A problem of the set: its key ("1a"), its title, and its graded tests.
+struct Problem {
+  std::string key;
+  std::string title;
+  std::vector<GradedTest> tests;
+};
+
+/// Problem 1a: weighted instantaneous inverse kinematics of the PP robot (p1a.cpp).
+Problem problem_1a();
+
+/// Every problem, in the order of the problem set.
+std::vector<Problem> graded_suite();
+
+}  // namespace opspace::grading
