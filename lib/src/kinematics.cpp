@@ -1,0 +1,112 @@
+#include "opspace/kinematics.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "spatial.hpp"
+
+namespace opspace {
+
+namespace {
+
+/// Throws std::out_of_range unless `frame` indexes model.frames.
+void check_frame(const Model& model, int frame) {
+  if (frame < 0 || frame >= static_cast<int>(model.frames.size())) {
+    throw std::out_of_range("frame index " + std::to_string(frame) + " out of range in model '" +
+                            model.name + "'");
+  }
+}
+
+/// Motion of joint i relative to its joint frame: Rot(axis, q) or Trans(q axis).
+Eigen::Isometry3d joint_motion(const Body& body, double q) {
+  Eigen::Isometry3d M = Eigen::Isometry3d::Identity();
+  if (body.type == JointType::kRevolute) {
+    M.linear() = Eigen::AngleAxisd(q, body.axis).toRotationMatrix();
+  } else {
+    M.translation() = q * body.axis;
+  }
+  return M;
+}
+
+}  // namespace
+
+void forward_kinematics(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q) {
+  model.check_joint_vector(q, "forward_kinematics: q");
+  // oMi = oMparent * parentMjoint * jointMi(q_i); S_i from the new pose.
+  for (int i = 0; i < model.dof(); ++i) {
+    const Body& body = model.bodies[i];
+    const Eigen::Isometry3d local = body.joint_placement * joint_motion(body, q(i));
+    data.body_pose[i] = body.parent < 0 ? local : data.body_pose[body.parent] * local;
+    data.S[i] = spatial::motion_subspace(body, data.body_pose[i]);
+  }
+}
+
+Eigen::Isometry3d frame_pose(const Model& model, const Data& data, int frame) {
+  check_frame(model, frame);
+  const Frame& f = model.frames[frame];
+  return f.body < 0 ? f.placement : data.body_pose[f.body] * f.placement;
+}
+
+Eigen::Vector3d point_position(const Model& model, const Data& data, int frame,
+                               const Eigen::Vector3d& p) {
+  return frame_pose(model, data, frame) * p;
+}
+
+void point_jacobian(const Model& model, const Data& data, int frame, const Eigen::Vector3d& p,
+                    Eigen::Ref<Matrix6Xd> J0) {
+  if (J0.cols() != model.dof()) {
+    throw std::invalid_argument("point_jacobian: J0 has " + std::to_string(J0.cols()) +
+                                " columns, model '" + model.name + "' has " +
+                                std::to_string(model.dof()) + " joints");
+  }
+  const Eigen::Vector3d x = point_position(model, data, frame, p);
+  J0.setZero();
+  // Column k for each joint k between the frame's body and the base: [v_O + w x x; w] of S_k.
+  for (int k = model.frames[frame].body; k >= 0; k = model.bodies[k].parent) {
+    const spatial::Vector6d& S = data.S[k];
+    J0.col(k).head<3>() = S.head<3>() + S.tail<3>().cross(x);
+    J0.col(k).tail<3>() = S.tail<3>();
+  }
+}
+
+Vector6d point_velocity(const Model& model, const Data& data, int frame, const Eigen::Vector3d& p,
+                        const Eigen::Ref<const Eigen::VectorXd>& qdot) {
+  model.check_joint_vector(qdot, "point_velocity: qdot");
+  const Eigen::Vector3d x = point_position(model, data, frame, p);
+  // Body twist at O, V = sum_k S_k qdot_k over the chain; then v_x = v_O + w x x.
+  spatial::Vector6d V = spatial::Vector6d::Zero();
+  for (int k = model.frames[frame].body; k >= 0; k = model.bodies[k].parent) V += data.S[k] * qdot(k);
+  Vector6d r;
+  r << V.head<3>() + V.tail<3>().cross(x), V.tail<3>();
+  return r;
+}
+
+Vector6d point_jacobian_dot_times_qdot(const Model& model, Data& data, int frame,
+                                       const Eigen::Vector3d& p,
+                                       const Eigen::Ref<const Eigen::VectorXd>& q,
+                                       const Eigen::Ref<const Eigen::VectorXd>& qdot) {
+  check_frame(model, frame);
+  model.check_joint_vector(qdot, "point_jacobian_dot_times_qdot: qdot");
+  forward_kinematics(model, data, q);
+  // Velocity pass with qdd = 0: v_i = v_parent + S_i qd_i, a_i = a_parent + v_i xm S_i qd_i
+  // (the spatial acceleration at O, since dS_i/dt = v_i xm S_i).
+  for (int i = 0; i < model.dof(); ++i) {
+    const int parent = model.bodies[i].parent;
+    const spatial::Vector6d vJ = data.S[i] * qdot(i);
+    data.v[i] = parent < 0 ? vJ : spatial::Vector6d(data.v[parent] + vJ);
+    data.a[i] = spatial::cross_motion(data.v[i], vJ);
+    if (parent >= 0) data.a[i] += data.a[parent];
+  }
+  const int body = model.frames[frame].body;
+  if (body < 0) return Vector6d::Zero();
+  // Classical acceleration of the body point at x: a_O + wdot x x + w x v_x.
+  const Eigen::Vector3d x = point_position(model, data, frame, p);
+  const Eigen::Vector3d w = data.v[body].tail<3>();
+  const Eigen::Vector3d vx = data.v[body].head<3>() + w.cross(x);
+  const Eigen::Vector3d wdot = data.a[body].tail<3>();
+  Vector6d r;
+  r << data.a[body].head<3>() + wdot.cross(x) + w.cross(vx), wdot;
+  return r;
+}
+
+}  // namespace opspace
