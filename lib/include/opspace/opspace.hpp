@@ -1,0 +1,52 @@
+/// @file opspace.hpp
+/// The operational-space matrices of a task x with Jacobian J (m x n) on a robot with mass
+/// matrix A (n x n) and gravity torques g (problem set 2, problems 1b-3):
+///
+///   Lambda = (J A^-1 J^T)^-1      task inertia
+///   Jbar   = A^-1 J^T Lambda      dynamically consistent inverse of J
+///   N      = I - Jbar J           null-space projector; N^T acts on torques
+///   p      = Jbar^T g             gravity seen at the task
+///
+/// Singularity-robust: Lambda^-1 = J A^-1 J^T is symmetric positive semi-definite, and its
+/// eigenvalues mu_i <= tol * mu_max are dropped from the inverse instead of being inverted.
+/// Near a singularity Lambda therefore stays finite (the task inertia along the singular
+/// direction is set to zero: no force is commanded along it) and Jbar, N and p stay finite.
+/// The default tolerance 1e-6 bounds the condition number of the inverted part at 1e6.
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+namespace opspace {
+
+/// Default relative eigenvalue cut-off of the robust task inertia (see the file comment).
+inline constexpr double kTaskInertiaTolerance = 1e-6;
+
+/// Workspace and results of operational_space(): sized once for an m-dimensional task on an
+/// n-DOF robot, reused without allocation.
+struct TaskSpace {
+  TaskSpace(Eigen::Index task_dim, Eigen::Index dof);
+
+  Eigen::MatrixXd Lambda;      ///< m x m task inertia
+  Eigen::MatrixXd Jbar;        ///< n x m dynamically consistent inverse
+  Eigen::MatrixXd N;           ///< n x n null-space projector I - Jbar J
+  Eigen::VectorXd p;           ///< m     gravity at the task, Jbar^T g
+  Eigen::Index rank = 0;       ///< eigenvalues of J A^-1 J^T kept in the inverse
+  Eigen::MatrixXd Ainv_Jt;     ///< n x m A^-1 J^T
+  Eigen::MatrixXd Lambda_inv;  ///< m x m J A^-1 J^T
+
+  // Factorisations, preallocated.
+  Eigen::LLT<Eigen::MatrixXd> A_llt;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+  Eigen::VectorXd inverse_eigenvalues;
+};
+
+/// Lambda, Jbar, N and p of task Jacobian J for mass matrix A and gravity torques g.
+/// Throws std::invalid_argument if the sizes do not match `out` or A is not positive definite.
+void operational_space(const Eigen::Ref<const Eigen::MatrixXd>& A,
+                       const Eigen::Ref<const Eigen::MatrixXd>& J,
+                       const Eigen::Ref<const Eigen::VectorXd>& g, TaskSpace& out,
+                       double tol = kTaskInertiaTolerance);
+
+}  // namespace opspace
