@@ -235,8 +235,9 @@ class Builder {
     const urdf::Inertial& in = *link.inertial;
     const int row = lines_.link.at(link.name);
     if (!(in.mass >= 0.0)) {
-      fail(model_.source, row, "link '" + link.name + "' has mass " + std::to_string(in.mass) +
-                                   " kg; a mass must be >= 0");
+      std::ostringstream s;
+      s << "link '" << link.name << "' has mass " << in.mass << " kg; a mass must be >= 0";
+      fail(model_.source, row, s.str());
     }
     Eigen::Matrix3d I;
     I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
