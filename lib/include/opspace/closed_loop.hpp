@@ -1,0 +1,61 @@
+/// @file closed_loop.hpp
+/// The scaffolding around a controller: checking what it returns, reporting progress,
+/// writing a CSV log.
+#pragma once
+
+#include <Eigen/Core>
+#include <fstream>
+#include <iosfwd>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace opspace {
+
+/// A controller returned something the simulation cannot apply.
+class ControllerError : public std::runtime_error {
+ public:
+  ControllerError(const std::string& message, double time)
+      : std::runtime_error(message), time_(time) {}
+  double time() const { return time_; }  ///< simulated time (s) of the bad tick
+
+ private:
+  double time_;
+};
+
+/// Throws ControllerError "<who> returned NaN in tau[i] at t = ... s" (or inf, or a wrong
+/// size) unless tau is a finite vector of `dof` torques.
+void check_torque(const Eigen::Ref<const Eigen::VectorXd>& tau, Eigen::Index dof, double t,
+                  const std::string& who);
+
+/// Prints "label: t = 3.0 / 20.0 s" to `out` every `every` seconds of simulated time, on one
+/// line rewritten in place when `out` is a terminal.
+class Progress {
+ public:
+  Progress(std::ostream& out, std::string label, double duration, double every = 1.0);
+  void update(double t);
+  void finish();
+
+ private:
+  std::ostream& out_;
+  std::string label_;
+  double duration_, every_, next_ = 0.0;
+  bool in_place_;
+};
+
+/// A CSV file with a header row; rows of numbers at full precision.
+class CsvLog {
+ public:
+  /// Opens `path` (creating its directory); throws std::runtime_error naming it on failure.
+  CsvLog(const std::string& path, const std::vector<std::string>& columns);
+  /// Appends one row; throws std::invalid_argument unless it has one value per column.
+  void row(const std::vector<double>& values);
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::size_t columns_;
+  std::ofstream file_;
+};
+
+}  // namespace opspace

@@ -1,0 +1,160 @@
+#include <cmath>
+#include <memory>
+#include <iostream>
+
+#include "opspace/closed_loop.hpp"
+#include "opspace/dynamics.hpp"
+#include "opspace/scenarios.hpp"
+#include "opspace/simulation.hpp"
+#include "opspace/urdf.hpp"
+
+namespace opspace::scenarios::p1b {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+std::vector<std::string> csv_columns() {
+  return {"t",    "x",    "y",    "z",    "x_d",  "y_d",  "z_d",  "tip_error", "q1",   "q2",
+          "q3",   "q4",   "q5",   "q6",   "q2_d", "tau1", "tau2", "tau3",      "tau4", "tau5",
+          "tau6"};
+}
+
+std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d) {
+  std::vector<double> row = {s.t, s.x(0), s.x(1), s.x(2), x_d(0), x_d(1), x_d(2), (s.x - x_d).norm()};
+  for (int i = 0; i < 6; ++i) row.push_back(s.q(i));
+  row.push_back(s.q2_desired);
+  for (int i = 0; i < 6; ++i) row.push_back(s.tau(i));
+  return row;
+}
+
+void summarise(Result& result, const Eigen::Vector3d& x_d) {
+  Summary& s = result.summary;
+  double tip_sq = 0.0, q2_sq = 0.0;
+  long n = 0;
+  for (const Sample& sample : result.samples) {
+    for (int i = 0; i < 6; ++i) {
+      if (std::abs(sample.tau(i)) > s.peak_torque) {
+        s.peak_torque = std::abs(sample.tau(i));
+        s.peak_torque_joint = i;
+      }
+    }
+    if (sample.t < kSettleTime) continue;
+    const double tip = (sample.x - x_d).norm();
+    const double q2 = std::abs(sample.q(1) - sample.q2_desired);
+    s.tip_error_max = std::max(s.tip_error_max, tip);
+    s.q2_error_max = std::max(s.q2_error_max, q2);
+    tip_sq += tip * tip;
+    q2_sq += q2 * q2;
+    ++n;
+  }
+  if (n > 0) {
+    s.tip_error_rms = std::sqrt(tip_sq / n);
+    s.q2_error_rms = std::sqrt(q2_sq / n);
+  }
+}
+
+}  // namespace
+
+Eigen::Vector3d tip_point() { return Eigen::Vector3d(-0.2, 0.0, 0.0); }
+
+Vector6d initial_q() { return (Vector6d() << 90.0, -22.5, 180.0, 90.0, 100.0, 180.0).finished() * kDeg; }
+
+double desired_q2(double t) { return -kPi / 8.0 + kPi / 8.0 * std::sin(2.0 * kPi * t / 10.0); }
+
+hw2::p1b::Goal goal(double t, const Eigen::Ref<const Vector6d>& q) {
+  hw2::p1b::Goal g;
+  g.x_d = Eigen::Vector3d(-0.15, 0.81, 0.58);
+  g.q_d = q;
+  g.q_d(1) = desired_q2(t);
+  g.kpx = 50.0;
+  g.kvx = 20.0;
+  g.kpj = 50.0;
+  g.kvj = 20.0;
+  return g;
+}
+
+Observer::Observer(const Model& puma)
+    : model_(puma), data_(puma), task_(3, puma.dof()), J0_(6, puma.dof()), tip_frame_(puma.frame_id(kTipLink)) {
+  if (puma.dof() != 6) {
+    throw std::invalid_argument("p1b::Observer: " + puma.source + " has " + std::to_string(puma.dof()) +
+                                " joints; problem 1b needs the 6-joint PUMA");
+  }
+}
+
+const hw2::p1b::State& Observer::observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                                         const Eigen::Ref<const Eigen::VectorXd>& dq) {
+  hw2::p1b::State& s = state_;
+  s.t = t;
+  s.q = q;
+  s.dq = dq;
+  forward_kinematics(model_, data_, q);
+  s.x = point_position(model_, data_, tip_frame_, tip_point());
+  point_jacobian(model_, data_, tip_frame_, tip_point(), J0_);
+  s.Jv = J0_.topRows<3>();
+  s.dx.noalias() = s.Jv * s.dq;
+  s.A = crba(model_, data_, q);
+  s.g = generalized_gravity(model_, data_, q);
+  operational_space(s.A, s.Jv, s.g, task_);
+  s.Lambda_v = task_.Lambda;
+  s.Jbar_v = task_.Jbar;
+  s.p = task_.p;
+  return s;
+}
+
+std::string describe(hw2::p1b::Part part) {
+  switch (part) {
+    case hw2::p1b::Part::kTipPd: return "PART1: tip PD with joint damping";
+    case hw2::p1b::Part::kPseudoInverseNullspace: return "PART2: null-space task with the pseudo-inverse projector";
+    case hw2::p1b::Part::kDynamicallyConsistentNullspace:
+      return "PART3: null-space task with the dynamically consistent projector";
+    case hw2::p1b::Part::kTipPdWithoutJointDamping: return "PART1 without joint damping";
+  }
+  return "unknown part";
+}
+
+Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
+  const Model puma = load_urdf(robot_path(kRobotFile));
+  Observer observer(puma);
+  // PART2's law spins the light wrist (its links weigh 0.1-0.8 kg and the model, like Bullet,
+  // has no motor inertia) to ~200 rad/s: that wild motion is the lesson, so the run may go on
+  // past the simulation's default speed bound of 100 rad/s.
+  SimulationSettings settings;
+  settings.max_joint_speed = kMaxJointSpeed;
+  Simulation sim(puma, settings);
+  sim.set_state(initial_q(), Vector6d::Zero());
+
+  const double dt = sim.settings().dt;
+  const long steps = std::lround(options.duration / dt);
+  Result result;
+  result.samples.reserve(static_cast<std::size_t>(steps) + 1);
+  const std::string who = "your " + describe(part).substr(0, describe(part).find(':')) + " controller";
+  Progress progress(options.progress ? *options.progress : std::clog, "hw2-p1", options.duration);
+  std::unique_ptr<CsvLog> csv;
+  if (!options.csv_path.empty()) csv = std::make_unique<CsvLog>(options.csv_path, csv_columns());
+
+  Vector6d tau;
+  try {
+    for (long k = 0; k <= steps; ++k) {
+      const double t = sim.time();
+      const hw2::p1b::State& state = observer.observe(t, sim.q(), sim.qdot());
+      const hw2::p1b::Goal g = goal(t, state.q);
+      tau = control(part, state, g);
+      check_torque(tau, 6, t, who);
+      result.samples.push_back({t, state.x, state.q, g.q_d(1), tau});
+      if (csv) csv->row(csv_row(result.samples.back(), g.x_d));
+      if (options.progress) progress.update(t);
+      if (k < steps) sim.step(tau);
+    }
+  } catch (const std::exception& e) {
+    result.failure = e.what();
+  }
+  if (options.progress) progress.finish();
+  result.summary.time_reached = sim.time();
+  result.summary.clamped_steps = sim.summary().total_clamped();
+  summarise(result, goal(0.0, initial_q()).x_d);
+  return result;
+}
+
+}  // namespace opspace::scenarios::p1b
