@@ -4,6 +4,7 @@
 #pragma once
 
 #include <opspace/hw2/p1a.hpp>
+#include <opspace/hw2/p1b.hpp>
 
 namespace opspace::grading {
 
@@ -20,9 +21,15 @@ struct P1aApi {
   decltype(&hw2::p1a::split_displacement) split_displacement;
 };
 
+/// Problem 1b (lib/include/opspace/hw2/p1b.hpp).
+struct P1bApi {
+  decltype(&hw2::p1b::control) control;
+};
+
 /// Every graded function of problem set 2.
 struct Hw2Api {
   P1aApi p1a;
+  P1bApi p1b;
 };
 
 /// The implementation linked into this program: exercises/ in hw2-grade, solutions/ in
@@ -33,6 +40,7 @@ inline Hw2Api linked_api() {
   api.p1a = {&p1a::degrees_of_freedom, &p1a::mass_matrix,       &p1a::task_jacobian,
              &p1a::pseudo_inverse,     &p1a::weighted_inverse,  &p1a::inertia_weighted_inverse,
              &p1a::nullspace_projector, &p1a::inverse_kinematics_step, &p1a::split_displacement};
+  api.p1b = {&hw2::p1b::control};
   return api;
 }
 

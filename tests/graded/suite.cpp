@@ -2,6 +2,6 @@
 
 namespace opspace::grading {
 
-std::vector<Problem> graded_suite() { return {problem_1a()}; }
+std::vector<Problem> graded_suite() { return {problem_1a(), problem_1b()}; }
 
 }  // namespace opspace::grading

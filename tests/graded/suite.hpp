@@ -19,6 +19,9 @@ struct Problem {
 /// Problem 1a: weighted instantaneous inverse kinematics of the PP robot (p1a.cpp).
 Problem problem_1a();
 
+/// Problem 1b: PUMA tip control and null-space motion, in simulation (p1b.cpp).
+Problem problem_1b();
+
 /// Every problem, in the order of the problem set.
 std::vector<Problem> graded_suite();
 

@@ -19,4 +19,10 @@ struct Mutant {
 /// Mistakes in problem 1a.
 std::vector<Mutant> p1a_mutants();
 
+/// Mistakes in problem 1b.
+std::vector<Mutant> p1b_mutants();
+
+/// Every known mistake.
+std::vector<Mutant> all_mutants();
+
 }  // namespace opspace::mutants

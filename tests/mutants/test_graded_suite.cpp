@@ -47,7 +47,7 @@ TEST_CASE("the reference solutions earn full marks on every graded test") {
 }
 
 TEST_CASE("each known-wrong implementation loses exactly the tests aimed at it") {
-  for (const opspace::mutants::Mutant& mutant : opspace::mutants::p1a_mutants()) {
+  for (const opspace::mutants::Mutant& mutant : opspace::mutants::all_mutants()) {
     grading::Hw2Api api = grading::linked_api();
     mutant.apply(api);
     const std::set<std::string> expected(mutant.caught_by.begin(), mutant.caught_by.end());

@@ -1,0 +1,198 @@
+// Graded tests of problem 1b. Two kinds:
+// - the law: at random states of the PUMA, the student's torque equals the problem set's
+//   equation written out here from the library's quantities (State from the Observer);
+// - the behaviour: the closed loop on the Bullet simulation, with bounds whose reasons are
+//   given beside them.
+#include <opspace/linalg.hpp>
+#include <opspace/scenarios.hpp>
+#include <opspace/urdf.hpp>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "suite.hpp"
+#include "support/random.hpp"
+
+namespace opspace::grading {
+
+namespace {
+
+namespace p1b = opspace::scenarios::p1b;
+using hw2::p1b::Part;
+using hw2::p1b::Vector6d;
+using hw2::p1b::Matrix6d;
+
+// The law is a few products of 6x6 matrices: round-off ~1e-13 relative. 1e-6 accepts any
+// correct arrangement (and a pseudo-inverse by SVD or by J^T (J J^T)^-1 at these well
+// conditioned states) and rejects every wrong term, which changes tau at order 1.
+constexpr double kLawTol = 1e-6;
+constexpr int kStates = 8;
+// The simulated runs: one period of q_d(t) (10 s).
+constexpr double kRunSeconds = 10.0;
+
+const Model& puma() {
+  static const Model model = load_urdf(robot_path(p1b::kRobotFile));
+  return model;
+}
+
+std::string mm(double metres) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f mm", 1e3 * metres);
+  return buffer;
+}
+
+std::string rad(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f rad", value);
+  return buffer;
+}
+
+// Tip PD with gravity at the tip: Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p)
+Vector6d tip_term(const hw2::p1b::State& s, const hw2::p1b::Goal& goal) {
+  return s.Jv.transpose() * (s.Lambda_v * (-goal.kpx * (s.x - goal.x_d) - goal.kvx * s.dx) + s.p);
+}
+
+// Joint task with gravity: A (-kpj (q - q_d) - kvj dq) + g
+Vector6d joint_term(const hw2::p1b::State& s, const hw2::p1b::Goal& goal) {
+  return s.A * (-goal.kpj * (s.q - goal.q_d) - goal.kvj * s.dq) + s.g;
+}
+
+// The problem set's law for each part, the oracle of the law tests.
+Vector6d expected_torque(Part part, const hw2::p1b::State& s, const hw2::p1b::Goal& goal) {
+  const Matrix6d I = Matrix6d::Identity();
+  switch (part) {
+    case Part::kTipPd: return tip_term(s, goal) + s.A * (-goal.kvj * s.dq);
+    case Part::kTipPdWithoutJointDamping: return tip_term(s, goal);
+    case Part::kPseudoInverseNullspace: {
+      const Eigen::MatrixXd Jv_pinv = opspace::pseudo_inverse(s.Jv);
+      return tip_term(s, goal) + (I - s.Jv.transpose() * Jv_pinv.transpose()) * joint_term(s, goal);
+    }
+    case Part::kDynamicallyConsistentNullspace:
+      return tip_term(s, goal) + (I - s.Jv.transpose() * s.Jbar_v.transpose()) * joint_term(s, goal);
+  }
+  return Vector6d::Zero();
+}
+
+// Random states around the scenario's start (within 0.5 rad, where Jv is well conditioned),
+// random goals and gains, so that no single hard-coded number can pass.
+void law(Part part, unsigned seed, const std::string& meaning, const Hw2Api& api, Check& check) {
+  testing::Random rng(seed);
+  p1b::Observer observer(puma());
+  for (int k = 0; k < kStates; ++k) {
+    const Vector6d q = p1b::initial_q() + rng.vector(6, -0.5, 0.5);
+    const Vector6d dq = rng.vector(6, -1.0, 1.0);
+    const hw2::p1b::State& s = observer.observe(rng.uniform(0.0, 10.0), q, dq);
+    hw2::p1b::Goal goal = p1b::goal(s.t, q);
+    goal.x_d = s.x + rng.vector(3, -0.05, 0.05);
+    goal.q_d = q + rng.vector(6, -0.3, 0.3);
+    goal.kpx = rng.uniform(10, 100);
+    goal.kvx = rng.uniform(5, 30);
+    goal.kpj = rng.uniform(10, 100);
+    goal.kvj = rng.uniform(5, 30);
+    const Vector6d expected = expected_torque(part, s, goal);
+    if (!check.near("Gamma at q = " + format(q), expected, api.p1b.control(part, s, goal), kLawTol, meaning)) return;
+  }
+}
+
+// The closed-loop runs, shared by the behaviour tests (each costs ~1 s), cached per control
+// function: the suite's own tests grade several implementations in turn.
+const p1b::Result& run(const Hw2Api& api, Part part) {
+  static std::map<std::pair<decltype(api.p1b.control), int>, p1b::Result> cache;
+  const auto key = std::make_pair(api.p1b.control, static_cast<int>(part));
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    scenarios::RunOptions options;
+    options.duration = kRunSeconds;
+    it = cache.emplace(key, p1b::run(part, api.p1b.control, options)).first;
+  }
+  return it->second;
+}
+
+bool ran_to_the_end(const p1b::Result& r, Check& check) {
+  return check.that(r.failure.empty(), "the run stopped early: " + r.failure);
+}
+
+void part1_holds_the_tip(const Hw2Api& api, Check& check) {
+  const p1b::Result& r = run(api, Part::kTipPd);
+  if (!ran_to_the_end(r, check)) return;
+  // The tip starts 2.3 mm from x_d. A tip PD with p holds it to the mm scale; without p
+  // (gravity at the tip) it would sag by about |p| / (kpx Lambda) ~ centimetres. 5 mm RMS.
+  check.that(r.summary.tip_error_rms < 5e-3,
+             "tip error RMS after 2 s: expected < 5 mm, measured " + mm(r.summary.tip_error_rms) +
+                 ". The tip should converge to x_d = (-0.15, 0.81, 0.58) and stay there");
+}
+
+void part3_holds_the_tip_while_q2_moves(const Hw2Api& api, Check& check) {
+  const p1b::Result& r = run(api, Part::kDynamicallyConsistentNullspace);
+  if (!ran_to_the_end(r, check)) return;
+  // Dynamically consistent: null-space torques cause no tip acceleration, so the tip error
+  // stays at the PART1 scale. Bound from the issue: 5 mm after 2 s.
+  check.that(r.summary.tip_error_max < 5e-3,
+             "max tip error after 2 s: expected < 5 mm, measured " + mm(r.summary.tip_error_max) +
+                 ". With the projector I - Jv^T Jbar_v^T the joint task cannot move the tip");
+  // A joint PD (kpj = 50, kvj = 20) following a sine of amplitude pi/8 at w = 2 pi / 10 lags
+  // with error amplitude (pi/8) |(-w^2 + j kvj w) / (kpj - w^2 + j kvj w)| = 0.096 rad
+  // (closed form of the second-order response). 0.15 rad leaves room for the coupling.
+  check.that(r.summary.q2_error_max < 0.15,
+             "max q2 tracking error after 2 s: expected < 0.15 rad, measured " + rad(r.summary.q2_error_max) +
+                 ". Joint 2 should follow q_d[1] = -pi/8 + pi/8 sin(2 pi t / 10)");
+}
+
+void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
+  const p1b::Result& r2 = run(api, Part::kPseudoInverseNullspace);
+  const p1b::Result& r3 = run(api, Part::kDynamicallyConsistentNullspace);
+  if (!ran_to_the_end(r2, check) || !ran_to_the_end(r3, check)) return;
+  // The lesson of problem 1b. With J+ the null-space torque leaves Jv^T (Jbar_v - Jv+)^T g
+  // (plus the projected joint task) acting on the tip, tens of newtons at these poses, while
+  // PART3 leaves none: the PART2 tip error must be at least ten times PART3's.
+  const double ratio = r2.summary.tip_error_rms / std::max(r3.summary.tip_error_rms, 1e-9);
+  check.that(ratio >= 10.0,
+             "tip error RMS: PART2 " + mm(r2.summary.tip_error_rms) + ", PART3 " + mm(r3.summary.tip_error_rms) +
+                 ", ratio " + std::to_string(ratio) +
+                 ", expected >= 10. The pseudo-inverse projector is not dynamically consistent: "
+                 "its null-space torques accelerate the tip");
+}
+
+}  // namespace
+
+Problem problem_1b() {
+  return {"1b",
+          "PUMA 560: tip control and null-space motion (simulated)",
+          {
+              {"ii. PART1 applies Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p) + A (-kvj dq)", 3,
+               "Build the task force F = Lambda_v (...) + p, map it with Jv^T, add the joint damping A (-kvj dq).",
+               [](const Hw2Api& api, Check& check) {
+                 law(Part::kTipPd, 201, "PART1: tip PD, gravity at the tip, joint damping", api, check);
+               }},
+              {"ii. without joint damping the law is Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p)", 1,
+               "PART1 without the A (-kvj dq) term.",
+               [](const Hw2Api& api, Check& check) {
+                 law(Part::kTipPdWithoutJointDamping, 202, "question ii: no joint damping", api, check);
+               }},
+              {"iii. PART2 projects the joint task with I - Jv^T Jv+^T", 3,
+               "Jv+ = Jv^T (Jv Jv^T)^-1 (6x3). The joint task is A (-kpj (q - q_d) - kvj dq) + g.",
+               [](const Hw2Api& api, Check& check) {
+                 law(Part::kPseudoInverseNullspace, 203, "PART2: pseudo-inverse null-space projector", api, check);
+               }},
+              {"iv. PART3 projects the joint task with I - Jv^T Jbar_v^T", 3,
+               "Use s.Jbar_v, the dynamically consistent inverse; the joint task includes g.",
+               [](const Hw2Api& api, Check& check) {
+                 law(Part::kDynamicallyConsistentNullspace, 204, "PART3: dynamically consistent projector", api,
+                     check);
+               }},
+              {"ii. in simulation PART1 brings the tip to x_d and holds it", 3,
+               "If the tip sags, check p; if it oscillates or runs away, check the signs and Lambda_v.",
+               part1_holds_the_tip},
+              {"iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d", 4,
+               "Only the dynamically consistent projector keeps the joint task out of the tip's way; "
+               "without g in the joint task, joint 2 sags instead of following q_d.",
+               part3_holds_the_tip_while_q2_moves},
+              {"iii. in simulation the PART2 tip drifts at least ten times more than PART3's", 3,
+               "PART2 must use the pseudo-inverse projector, PART3 the dynamically consistent one: "
+               "the difference is the point of the problem.",
+               part2_drifts_more_than_part3},
+          }};
+}
+
+}  // namespace opspace::grading
