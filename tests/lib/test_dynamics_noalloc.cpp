@@ -17,7 +17,9 @@ std::atomic<long> g_allocations{0};
 }  // namespace
 
 #if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/allocator_interface.h>
+// Declared by hand: GCC ships the ASan runtime but not <sanitizer/allocator_interface.h>.
+extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*)(const volatile void*, std::size_t),
+                                                         void (*)(const volatile void*));
 namespace {
 void count_malloc(const volatile void*, std::size_t) { ++g_allocations; }
 void ignore_free(const volatile void*) {}
