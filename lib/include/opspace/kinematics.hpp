@@ -13,7 +13,8 @@ namespace opspace {
 using Matrix6Xd = Eigen::Matrix<double, 6, Eigen::Dynamic>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 
-/// Body poses oMi for configuration q, into data.body_pose.
+/// Body poses oMi = oMparent * placement * joint(q_i) for configuration q (data.body_pose), and
+/// each joint's motion subspace S_i in the base frame (data.S).
 void forward_kinematics(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q);
 
 /// Pose of frame `frame` in the base frame.

@@ -9,7 +9,8 @@
 
 namespace opspace {
 
-/// Error in a URDF file; what() reads "<file>: <cause>" (with a line number where known).
+/// Error in a URDF file; what() reads "<file>:<line>: <cause>", or "<file>: <cause>" where no
+/// line is known (a missing file, a rejection by urdfdom itself).
 class UrdfError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
