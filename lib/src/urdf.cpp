@@ -170,7 +170,8 @@ Inertia combine(const Inertia& a, const Inertia& b) {
 /// Builds the Model from urdfdom's tree, merging fixed-joint children into their parent body.
 class Builder {
  public:
-  Builder(Model& model, const Lines& lines) : model_(model), lines_(lines) {}
+  Builder(Model& model, const urdf::ModelInterface& tree, const Lines& lines)
+      : model_(model), tree_(tree), lines_(lines) {}
 
   /// Adds `link`, whose frame is X in body `body` (-1: the base), and everything below it.
   void add_link(const urdf::Link& link, int body, const Eigen::Isometry3d& X) {
@@ -184,19 +185,10 @@ class Builder {
     std::sort(joints.begin(), joints.end(), [&](const auto& a, const auto& b) {
       return lines_.joint.at(a->name) < lines_.joint.at(b->name);
     });
-    for (std::size_t k = 0; k < joints.size(); ++k) {
-      add_joint(*joints[k], *link.child_links.at(index_of_child(link, joints[k]->child_link_name)), body, X);
-    }
+    for (const auto& joint : joints) add_joint(*joint, *tree_.getLink(joint->child_link_name), body, X);
   }
 
  private:
-  static std::size_t index_of_child(const urdf::Link& link, const std::string& name) {
-    for (std::size_t i = 0; i < link.child_links.size(); ++i) {
-      if (link.child_links[i]->name == name) return i;
-    }
-    return link.child_links.size();  // .at() throws: urdfdom always links both ways
-  }
-
   void add_joint(const urdf::Joint& joint, const urdf::Link& child, int body, const Eigen::Isometry3d& X) {
     const Eigen::Isometry3d Xj = X * to_isometry(joint.parent_to_joint_origin_transform);
     if (joint.type == urdf::Joint::FIXED) {
@@ -289,6 +281,7 @@ class Builder {
   }
 
   Model& model_;
+  const urdf::ModelInterface& tree_;
   const Lines& lines_;
 };
 
@@ -312,7 +305,7 @@ Model parse_urdf(const std::string& xml, const std::string& source) {
   Model model;
   model.name = tree->getName();
   model.source = source;
-  Builder(model, lines).add_link(*tree->getRoot(), -1, Eigen::Isometry3d::Identity());
+  Builder(model, *tree, lines).add_link(*tree->getRoot(), -1, Eigen::Isometry3d::Identity());
   return model;
 }
 
