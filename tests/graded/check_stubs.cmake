@@ -1,3 +1,4 @@
+cmake_minimum_required(VERSION 3.22)
 # Runs the grader on exercises/ and requires a total of 0, provided exercises/ are the stubs
 # as shipped (their SHA-256 sums are in stubs.sha256). Once a student has edited them the
 # check does not apply and is skipped; in CI a mismatch is an error (a stale manifest).

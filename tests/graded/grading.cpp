@@ -61,6 +61,43 @@ bool Check::that(bool condition, const std::string& message) {
   return condition;
 }
 
+namespace {
+
+std::string value(double v, double scale, const std::string& unit) {
+  std::ostringstream s;
+  s.precision(4);
+  s << v * scale << (unit.empty() ? "" : " " + unit);
+  return s.str();
+}
+
+}  // namespace
+
+bool Check::at_most(const std::string& what, double measured, double bound, const std::string& meaning,
+                    double unit_scale, const std::string& unit) {
+  if (std::isfinite(measured) && measured <= bound) return true;
+  const std::string finding = what + ": expected at most " + value(bound, unit_scale, unit) + ", measured " +
+                              value(measured, unit_scale, unit);
+  if (std::isfinite(measured) && measured <= 2.0 * bound) {
+    credit_at_most(0.5, finding + " (within twice the bound: half credit). " + meaning);
+  } else {
+    fail(finding + ". " + meaning);
+  }
+  return false;
+}
+
+bool Check::at_least(const std::string& what, double measured, double bound, const std::string& meaning,
+                     double unit_scale, const std::string& unit) {
+  if (std::isfinite(measured) && measured >= bound) return true;
+  const std::string finding = what + ": expected at least " + value(bound, unit_scale, unit) + ", measured " +
+                              value(measured, unit_scale, unit);
+  if (std::isfinite(measured) && measured >= 0.5 * bound) {
+    credit_at_most(0.5, finding + " (within half the bound: half credit). " + meaning);
+  } else {
+    fail(finding + ". " + meaning);
+  }
+  return false;
+}
+
 void Check::credit_at_most(double fraction, const std::string& message) {
   fraction_ = std::min(fraction_, std::clamp(fraction, 0.0, 1.0));
   findings_.push_back(message);

@@ -25,6 +25,15 @@ class Check {
             const std::string& meaning);
   /// Passes if `condition`; otherwise records `message`.
   bool that(bool condition, const std::string& message);
+  /// A measured quantity that should stay at or below `bound`. Partial credit rule: at or
+  /// below the bound earns full credit, up to twice the bound half, beyond that nothing.
+  /// `what` names the quantity with its unit; values are printed with `unit_scale` applied.
+  bool at_most(const std::string& what, double measured, double bound, const std::string& meaning,
+               double unit_scale = 1.0, const std::string& unit = "");
+  /// A measured quantity that should reach `bound`: full credit at or above it, half from
+  /// bound / 2, nothing below (the mirror image of at_most()).
+  bool at_least(const std::string& what, double measured, double bound, const std::string& meaning,
+                double unit_scale = 1.0, const std::string& unit = "");
   /// Caps the test's credit at `fraction` (partial credit for a measured quantity).
   void credit_at_most(double fraction, const std::string& message);
 

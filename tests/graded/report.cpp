@@ -44,6 +44,7 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems)
       for (const std::string& finding : r.findings) out << "          - " << finding << "\n";
       out << "          hint: " << r.test->hint << "\n";
     }
+    if (!p.failure.empty()) out << "  ! " << p.failure << "\n";
     out << "  Problem " << p.problem->key << ": " << points(p.score) << " / " << points(p.max_score)
         << " points\n";
     total += p.score;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "suite.hpp"
@@ -15,6 +16,7 @@ struct ProblemResult {
   std::vector<TestResult> results;
   double score = 0.0;
   double max_score = 0.0;
+  std::string failure;  ///< empty, or how the problem's process ended early (crash, time-out)
 };
 
 /// Runs every test of `problem` against `api`.
