@@ -58,10 +58,4 @@ std::vector<Mutant> p1a_mutants() {
   };
 }
 
-std::vector<Mutant> all_mutants() {
-  std::vector<Mutant> all = p1a_mutants();
-  for (Mutant& m : p1b_mutants()) all.push_back(std::move(m));
-  return all;
-}
-
 }  // namespace opspace::mutants

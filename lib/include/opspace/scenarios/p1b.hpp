@@ -1,0 +1,93 @@
+/// @file scenarios/p1b.hpp
+/// Problem 1b: the PUMA 560 holds its tip while joint 2 moves in the null space (numbers
+/// from shared robots.md and the problem set), and its closed-loop run on the simulation.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "opspace/hw2/p1b.hpp"
+#include "opspace/kinematics.hpp"
+#include "opspace/model.hpp"
+#include "opspace/opspace.hpp"
+#include "opspace/scenarios/common.hpp"
+
+namespace opspace::scenarios {
+
+namespace p1b {
+
+using hw2::p1b::Vector6d;
+
+inline constexpr const char* kRobotFile = "puma.urdf";
+inline constexpr const char* kTipLink = "end-effector";
+inline constexpr double kSettleTime = 2.0;  ///< errors are measured after this (s)
+/// Speed bound of the run (rad/s): high enough that PART2's wild wrist motion (~200 rad/s)
+/// is shown rather than stopped (docs/problem1b.md).
+inline constexpr double kMaxJointSpeed = 1000.0;
+
+/// The tip: point (-0.2, 0, 0) of link `end-effector`.
+Eigen::Vector3d tip_point();
+/// q(0) = (90, -22.5, 180, 90, 100, 180) deg, at rest.
+Vector6d initial_q();
+/// q_d[1](t) = -pi/8 + pi/8 sin(2 pi t / 10).
+double desired_q2(double t);
+/// x_d = (-0.15, 0.81, 0.58); q_d = q except q_d[1] = desired_q2(t); kpx = kpj = 50, kvx = kvj = 20.
+hw2::p1b::Goal goal(double t, const Eigen::Ref<const Vector6d>& q);
+
+/// Computes the controller's State from (t, q, dq): tip kinematics, A, g and the
+/// operational-space matrices of the tip task. Allocates nothing per call.
+class Observer {
+ public:
+  explicit Observer(const Model& puma);
+  const hw2::p1b::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                                 const Eigen::Ref<const Eigen::VectorXd>& dq);
+
+ private:
+  const Model& model_;
+  Data data_;
+  TaskSpace task_;
+  Matrix6Xd J0_;
+  int tip_frame_;
+  hw2::p1b::State state_;
+};
+
+/// The control function under test: exercises/ or solutions/ (hw2::p1b::control), or a mutant.
+using Controller = Vector6d (*)(hw2::p1b::Part, const hw2::p1b::State&, const hw2::p1b::Goal&);
+
+/// One simulated instant.
+struct Sample {
+  double t = 0.0;
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();  ///< tip position
+  Vector6d q = Vector6d::Zero();
+  double q2_desired = 0.0;
+  Vector6d tau = Vector6d::Zero();
+};
+
+/// What a run measured; errors are taken after kSettleTime.
+struct Summary {
+  double tip_error_max = 0.0;  ///< max |x - x_d| (m)
+  double tip_error_rms = 0.0;  ///< RMS |x - x_d| (m)
+  double q2_error_max = 0.0;   ///< max |q2 - q2_d| (rad)
+  double q2_error_rms = 0.0;   ///< RMS |q2 - q2_d| (rad)
+  double peak_torque = 0.0;    ///< max |tau_i| requested over the run (N m)
+  int peak_torque_joint = 0;
+  long clamped_steps = 0;      ///< steps whose torque was clamped to an effort limit (any joint)
+  double time_reached = 0.0;   ///< simulated time at the end (s)
+};
+
+struct Result {
+  std::vector<Sample> samples;  ///< one per 1 ms step
+  Summary summary;
+  std::string failure;          ///< empty, or what stopped the run early (NaN torque, ...)
+};
+
+/// Runs problem 1b's scenario with `control` applying law `part` every 1 ms step.
+Result run(hw2::p1b::Part part, Controller control, const RunOptions& options);
+
+/// "PART1: tip PD with joint damping" and so on, for reports.
+std::string describe(hw2::p1b::Part part);
+
+}  // namespace p1b
+
+}  // namespace opspace::scenarios
