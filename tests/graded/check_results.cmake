@@ -3,7 +3,8 @@ cmake_minimum_required(VERSION 3.22)
 # - the exit code is 0 (grading ran, whatever the score);
 # - results.json has Gradescope's fields with the right types: score, max_score,
 #   execution_time (numbers), tests[] of {name, score, max_score, status, output, visibility};
-# - each problem in FULL earned all its points, each in ZERO none (tests are named "<key> ...");
+# - each problem in FULL earned all its points (FULL=ALL: every problem), each in ZERO none
+#   (tests are named "<key> ...");
 # - the printed report matches EXPECT (a regular expression), if given.
 #   cmake -DCOMMAND="prog;args" -DJSON=file [-DFULL="1a"] [-DZERO="1b"] [-DEXPECT=regex] -P check_results.cmake
 execute_process(COMMAND ${COMMAND} --gradescope "${JSON}" OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
@@ -49,7 +50,7 @@ foreach(i RANGE ${last})
   string(JSON score GET "${json}" tests ${i} score)
   string(JSON max GET "${json}" tests ${i} max_score)
   string(REGEX MATCH "^[^ ]+" problem "${name}")
-  if(problem IN_LIST FULL AND NOT score EQUAL max)
+  if((FULL STREQUAL "ALL" OR problem IN_LIST FULL) AND NOT score EQUAL max)
     message(FATAL_ERROR "'${name}' earned ${score} of ${max}; problem ${problem} should earn full marks:\n${out}")
   endif()
   if(problem IN_LIST ZERO AND NOT score EQUAL 0)
