@@ -116,12 +116,9 @@ TEST_CASE("Bullet and our model agree on every robot: poses, mass matrix and one
   }
 }
 
-// may_fail: at the time of writing, coriolis_centrifugal/rnea/forward_dynamics of dynamics.cpp
-// disagree with both Bullet and the Christoffel identity of our own CRBA (e.g. rrr.urdf at
-// q = (0.3, 0.4, 0.5), qdot = (0, 0.5, -0.7): b = (0, 0.00528, 0.0895), while the closed form of
-// the planar pair is (0, 0.0189, 0.0225)). Reported to the lead; drop may_fail once fixed.
-TEST_CASE("Bullet's one-step acceleration equals our forward_dynamics on every robot" *
-          doctest::may_fail()) {
+// Two independent implementations of the same dynamics: Bullet's articulated-body step and
+// our CRBA + RNEA (b, g) solved by Cholesky.
+TEST_CASE("Bullet's one-step acceleration equals our forward_dynamics on every robot") {
   for (const std::string& file : kRobots) {
     CAPTURE(file);
     const Model model = opspace::load_urdf(opspace::robot_path(file));
