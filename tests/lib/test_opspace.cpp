@@ -5,7 +5,10 @@
 #include <Eigen/Dense>
 
 #include "opspace/linalg.hpp"
+#include "opspace/dynamics.hpp"
+#include "opspace/kinematics.hpp"
 #include "opspace/opspace.hpp"
+#include "opspace/urdf.hpp"
 #include "support/random.hpp"
 
 using opspace::testing::Random;
@@ -97,4 +100,49 @@ TEST_CASE("operational_space names the mismatch in its error") {
   CHECK_THROWS_WITH_AS(opspace::operational_space(-Eigen::MatrixXd::Identity(6, 6), rng.matrix(3, 6),
                                                   rng.vector(6), ts),
                        doctest::Contains("not positive definite"), std::invalid_argument);
+}
+
+TEST_CASE("at the 3R arm's stretched-up singularity Lambda keeps only the one direction left") {
+  // robots/rrr.urdf at theta = (0, 90 deg, 0) points straight up (problem 4): joint 1 turns
+  // the tip about its own axis and joints 2, 3 both move it along X0, so Jv has rank 1.
+  const opspace::Model model = opspace::load_urdf(opspace::robot_path("rrr.urdf"));
+  opspace::Data data(model);
+  const int tip = model.frame_id("end-effector");
+  opspace::Matrix6Xd J0(6, 3);
+  opspace::TaskSpace ts(3, 3);
+  auto task_space_at = [&](const Eigen::Vector3d& q) {
+    opspace::forward_kinematics(model, data, q);
+    opspace::point_jacobian(model, data, tip, Eigen::Vector3d::Zero(), J0);
+    const Eigen::MatrixXd Jv = J0.topRows<3>();
+    opspace::operational_space(opspace::crba(model, data, q), Jv, opspace::generalized_gravity(model, data, q), ts);
+    return Jv;
+  };
+  const double half_pi = std::acos(0.0);
+
+  SUBCASE("exactly at the singularity: rank 1, everything finite, the null space still decoupled") {
+    const Eigen::MatrixXd Jv = task_space_at(Eigen::Vector3d(0.0, half_pi, 0.0));
+    CHECK(ts.rank == 1);
+    CHECK(ts.Lambda.allFinite());
+    CHECK(ts.N.allFinite());
+    CHECK(ts.p.allFinite());
+    // The one task direction kept is X0: Lambda has no component along Y0 or Z0.
+    CHECK(ts.Lambda.row(1).norm() < 1e-9);
+    CHECK(ts.Lambda.row(2).norm() < 1e-9);
+    const Eigen::MatrixXd A = opspace::crba(model, data, Eigen::Vector3d(0.0, half_pi, 0.0));
+    CHECK((Jv * A.inverse() * ts.N.transpose()).norm() < 1e-9);
+  }
+  SUBCASE("close to the singularity: Lambda stays within the bound the cut-off guarantees") {
+    // Off by eps, the two vanishing singular values of Jv are O(eps) (the elbow shortens the
+    // reach by L3 eps per radian, joint 1 swings a tip that is ~L2 eps off its axis), so
+    // J A^-1 J^T has eigenvalues O(eps^2). Dropping mu_i <= tol mu_max bounds every eigenvalue
+    // of Lambda by 1 / (tol mu_max); without the cut-off eps = 1e-5 would give ~1e10.
+    for (const double eps : {1e-2, 1e-3, 1e-5, 1e-7}) {
+      CAPTURE(eps);
+      task_space_at(Eigen::Vector3d(0.0, half_pi - eps, eps));
+      const double mu_max = ts.Lambda_inv.selfadjointView<Eigen::Lower>().eigenvalues().maxCoeff();
+      const double lambda_max = ts.Lambda.selfadjointView<Eigen::Lower>().eigenvalues().maxCoeff();
+      CHECK(ts.Lambda.allFinite());
+      CHECK(lambda_max <= (1.0 + 1e-9) / (opspace::kTaskInertiaTolerance * mu_max));
+    }
+  }
 }
