@@ -92,6 +92,13 @@ TEST_CASE("near a singularity Lambda stays finite and drops only the singular di
   }
 }
 
+TEST_CASE("a task space beyond the fixed maximum sizes is refused with the sizes named") {
+  CHECK_THROWS_WITH_AS(opspace::TaskSpace(7, 7), doctest::Contains("the task dimension is 7, expected 1 to 6"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(opspace::TaskSpace(3, 13), doctest::Contains("the number of joints is 13, expected 1 to 12"),
+                       std::invalid_argument);
+}
+
 TEST_CASE("operational_space names the mismatch in its error") {
   opspace::TaskSpace ts(3, 6);
   Random rng(35);

@@ -23,23 +23,34 @@ namespace opspace {
 /// Default relative eigenvalue cut-off of the robust task inertia (see the file comment).
 inline constexpr double kTaskInertiaTolerance = 1e-6;
 
-/// Workspace and results of operational_space(): sized once for an m-dimensional task on an
-/// n-DOF robot, reused without allocation.
+/// Largest task (a full 6-D pose) and largest robot that TaskSpace holds. With these bounds
+/// every matrix, and every temporary of the factorisations, lives on the stack.
+inline constexpr int kMaxTaskDim = 6;
+inline constexpr int kMaxDof = 12;
+
+using TaskMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxTaskDim, kMaxTaskDim>;
+using TaskVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxTaskDim, 1>;
+using JointTaskMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDof, kMaxTaskDim>;
+using JointMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDof, kMaxDof>;
+
+/// Workspace and results of operational_space() for an m-dimensional task (m <= 6) on an
+/// n-DOF robot (n <= 12). Never allocates on the heap.
 struct TaskSpace {
+  /// Throws std::invalid_argument if task_dim or dof is out of range.
   TaskSpace(Eigen::Index task_dim, Eigen::Index dof);
 
-  Eigen::MatrixXd Lambda;      ///< m x m task inertia
-  Eigen::MatrixXd Jbar;        ///< n x m dynamically consistent inverse
-  Eigen::MatrixXd N;           ///< n x n null-space projector I - Jbar J
-  Eigen::VectorXd p;           ///< m     gravity at the task, Jbar^T g
+  TaskMatrix Lambda;           ///< m x m task inertia
+  JointTaskMatrix Jbar;        ///< n x m dynamically consistent inverse
+  JointMatrix N;               ///< n x n null-space projector I - Jbar J
+  TaskVector p;                ///< m     gravity at the task, Jbar^T g
   Eigen::Index rank = 0;       ///< eigenvalues of J A^-1 J^T kept in the inverse
-  Eigen::MatrixXd Ainv_Jt;     ///< n x m A^-1 J^T
-  Eigen::MatrixXd Lambda_inv;  ///< m x m J A^-1 J^T
+  JointTaskMatrix Ainv_Jt;     ///< n x m A^-1 J^T
+  TaskMatrix Lambda_inv;       ///< m x m J A^-1 J^T
 
-  // Factorisations, preallocated.
-  Eigen::LLT<Eigen::MatrixXd> A_llt;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
-  Eigen::VectorXd inverse_eigenvalues;
+  // Factorisations.
+  Eigen::LLT<JointMatrix> A_llt;
+  Eigen::SelfAdjointEigenSolver<TaskMatrix> eigen;
+  TaskVector inverse_eigenvalues;
 };
 
 /// Lambda, Jbar, N and p of task Jacobian J for mass matrix A and gravity torques g.
