@@ -15,6 +15,7 @@ namespace opspace {
 /// A controller returned something the simulation cannot apply.
 class ControllerError : public std::runtime_error {
  public:
+  /// `message` says what the controller returned and when; `time` is that tick's time (s).
   ControllerError(const std::string& message, double time)
       : std::runtime_error(message), time_(time) {}
   double time() const { return time_; }  ///< simulated time (s) of the bad tick
@@ -50,7 +51,7 @@ class CsvLog {
   CsvLog(const std::string& path, const std::vector<std::string>& columns);
   /// Appends one row; throws std::invalid_argument unless it has one value per column.
   void row(const std::vector<double>& values);
-  const std::string& path() const { return path_; }
+  const std::string& path() const { return path_; }  ///< the file being written
 
  private:
   std::string path_;

@@ -24,7 +24,7 @@ struct Inertia {
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< rotational inertia about the COM
 };
 
-/// A geometric primitive attached to a body (URDF <collision> or <visual>).
+/// A geometric primitive attached to a body (a URDF collision or visual element).
 struct Shape {
   enum class Kind { kBox, kCylinder, kSphere };
   Kind kind = Kind::kBox;
@@ -82,6 +82,7 @@ struct Model {
 
 /// Workspace of the algorithms: sized once from a Model, then reused without allocation.
 struct Data {
+  /// Sizes every member for `model`: the only allocation of the algorithms.
   explicit Data(const Model& model);
 
   std::vector<Eigen::Isometry3d> body_pose;  ///< oMi: body frames in the base frame

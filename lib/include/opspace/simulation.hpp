@@ -97,7 +97,7 @@ struct SimulationSummary {
 struct Energy {
   double kinetic = 0.0;    ///< J
   double potential = 0.0;  ///< J, zero at the base origin height: -sum m_i g . c_i
-  double total() const { return kinetic + potential; }
+  double total() const { return kinetic + potential; }  ///< kinetic + potential (J)
 };
 
 /// A Bullet multibody world built from a Model. Owns every Bullet object; not copyable.

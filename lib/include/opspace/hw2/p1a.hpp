@@ -15,6 +15,7 @@ struct DegreesOfFreedom {
   int robot = 0;
   bool redundant = false;  ///< the robot has more degrees of freedom than the task needs
 };
+/// Question i: task DOF = 1 (x_ee), robot DOF = 2 (d1, d2).
 DegreesOfFreedom degrees_of_freedom();
 
 /// Question ii: A such that the kinetic energy is T = 1/2 qdot^T A qdot.
@@ -44,6 +45,7 @@ struct DisplacementSplit {
   Eigen::Vector2d with_pseudo_inverse = Eigen::Vector2d::Zero();       ///< dq = J+ dx
   Eigen::Vector2d with_inertia_weighted = Eigen::Vector2d::Zero();     ///< dq = Jbar dx
 };
+/// Question vi: dq = J+ dx and dq = Jbar dx for A(m1, m2), with dq0 = 0.
 DisplacementSplit split_displacement(double m1, double m2, double dx);
 
 }  // namespace opspace::hw2::p1a
