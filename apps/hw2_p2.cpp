@@ -30,7 +30,7 @@ void print_summary(const p2::Result& r, const std::string& csv) {
             << 1e3 * s.position_error_max << " mm, RMS " << 1e3 * s.position_error_rms << " mm\n"
             << "orientation error after " << p2::kSettleTime << " s: max " << kDegPerRad * s.orientation_error_max
             << " deg, RMS " << kDegPerRad * s.orientation_error_rms << " deg\n"
-            << "closest approach to a joint limit: " << kDegPerRad * s.joint_limit_margin << " deg (joint "
+            << "smallest joint-limit margin (negative: past the limit): " << kDegPerRad * s.joint_limit_margin << " deg (joint "
             << s.joint_limit_joint + 1 << ")\n"
             << "joint drift over the last period: " << kDegPerRad * s.joint_drift_per_period << " deg (joint "
             << s.joint_drift_joint + 1 << ")\n"
