@@ -5,6 +5,7 @@
 
 #include <opspace/hw2/p1a.hpp>
 #include <opspace/hw2/p1b.hpp>
+#include <opspace/hw2/p2.hpp>
 
 namespace opspace::grading {
 
@@ -26,10 +27,18 @@ struct P1bApi {
   decltype(&hw2::p1b::control) control;
 };
 
+/// Problem 2 (lib/include/opspace/hw2/p2.hpp).
+struct P2Api {
+  decltype(&hw2::p2::desired_acceleration) desired_acceleration;
+  decltype(&hw2::p2::desired_twist_acceleration) desired_twist_acceleration;
+  decltype(&hw2::p2::control) control;
+};
+
 /// Every graded function of problem set 2.
 struct Hw2Api {
   P1aApi p1a;
   P1bApi p1b;
+  P2Api p2;
 };
 
 /// The implementation linked into this program: exercises/ in hw2-grade, solutions/ in
@@ -41,6 +50,7 @@ inline Hw2Api linked_api() {
              &p1a::pseudo_inverse,     &p1a::weighted_inverse,  &p1a::inertia_weighted_inverse,
              &p1a::nullspace_projector, &p1a::inverse_kinematics_step, &p1a::split_displacement};
   api.p1b = {&hw2::p1b::control};
+  api.p2 = {&hw2::p2::desired_acceleration, &hw2::p2::desired_twist_acceleration, &hw2::p2::control};
   return api;
 }
 

@@ -22,6 +22,9 @@ Problem problem_1a();
 /// Problem 1b: PUMA tip control and null-space motion, in simulation (p1b.cpp).
 Problem problem_1b();
 
+/// Problem 2: iiwa position and Euler-parameter tracking, in simulation (p2.cpp).
+Problem problem_2();
+
 /// Every problem, in the order of the problem set.
 std::vector<Problem> graded_suite();
 

@@ -1,0 +1,115 @@
+/// @file scenarios/p2.hpp
+/// Problem 2: the KUKA iiwa tracks a position and Euler-parameter orientation trajectory
+/// (numbers from shared robots.md and the problem set), and its closed-loop run on the
+/// simulation.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "opspace/hw2/p2.hpp"
+#include "opspace/kinematics.hpp"
+#include "opspace/model.hpp"
+#include "opspace/opspace.hpp"
+#include "opspace/scenarios/common.hpp"
+
+namespace opspace::scenarios {
+
+namespace p2 {
+
+using hw2::p2::Vector7d;
+
+inline constexpr const char* kRobotFile = "iiwa7.urdf";
+inline constexpr const char* kTipLink = "link7";  ///< operational point: this link's origin
+inline constexpr double kSettleTime = 1.0;        ///< errors are measured after this (s)
+inline constexpr double kPeriod = 5.0;            ///< period of the desired trajectory (s)
+inline constexpr double kDefaultDuration = 10.0;  ///< two periods of the trajectory (s)
+
+/// q(0) = (125.9, 39.2, -49.2, 70.0, -62.4, 80.2, -172.8) deg, at rest.
+Vector7d initial_q();
+
+/// The desired trajectory x_d(t) = [x_d, y_d, z_d, lambda_d] (problem set, problem 2) and its
+/// analytic first and second time derivatives:
+///   x_d = 0, y_d = 0.5 + 0.1 cos(w t), z_d = 0.65 - 0.05 cos(2 w t), w = 2 pi / 5,
+///   lambda_d = (1/sqrt2) (sin a, cos a, sin a, cos a), a = (pi/4) cos(w t).
+struct Reference {
+  Vector7d x, xdot, xddot;
+};
+Reference desired(double t);
+
+/// x_d and xdot_d of desired(t), xddot_d = 0 (run() fills it from the student's 2(a)),
+/// kpx = 50, kvx = 20, kvj = 20.
+hw2::p2::Goal goal(double t);
+
+/// Computes the controller's State from (t, q, dq): pose, Euler parameters and twist of
+/// link7's origin, A, g and the operational-space matrices of the 6-D task. Allocates
+/// nothing per call.
+class Observer {
+ public:
+  explicit Observer(const Model& iiwa);
+  /// The measured lambda is returned on the side of `lambda_side` (normally lambda_d(t)).
+  const hw2::p2::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                                const Eigen::Ref<const Eigen::VectorXd>& dq,
+                                const Eigen::Ref<const Eigen::Vector4d>& lambda_side);
+
+ private:
+  const Model& model_;
+  Data data_;
+  TaskSpace task_;
+  Matrix6Xd J0_;
+  int tip_frame_;
+  hw2::p2::State state_;
+};
+
+/// The student's functions under test: exercises/ or solutions/, or a mutant.
+using Controller = Vector7d (*)(const hw2::p2::State&, const hw2::p2::Goal&);
+using DesiredAcceleration = Vector7d (*)(double);
+
+/// One simulated instant.
+struct Sample {
+  double t = 0.0;
+  Eigen::Vector3d x_p = Eigen::Vector3d::Zero();        ///< position of link7's origin
+  Eigen::Vector4d lambda = Eigen::Vector4d::Zero();     ///< its Euler parameters (as observed)
+  Vector7d x_d = Vector7d::Zero();                      ///< desired [position; lambda_d]
+  Vector7d q = Vector7d::Zero();
+  Vector7d tau = Vector7d::Zero();
+};
+
+/// What a run measured; tracking errors are taken after kSettleTime.
+struct Summary {
+  double position_error_max = 0.0;     ///< max |x_p - x_pd| (m)
+  double position_error_rms = 0.0;     ///< RMS |x_p - x_pd| (m)
+  double orientation_error_max = 0.0;  ///< max angle of R R_d^T (rad)
+  double orientation_error_rms = 0.0;  ///< RMS angle of R R_d^T (rad)
+  double lambda_norm_error_max = 0.0;  ///< max ||lambda| - 1| over the run
+  double lambda_step_max = 0.0;        ///< max |lambda(t + dt) - lambda(t)| over the run
+  double lambda_dot_lambda_d_min = 1.0;  ///< min lambda . lambda_d over the run
+  /// min over the run and the joints of the distance to the nearest URDF position limit (rad);
+  /// negative when a limit was exceeded.
+  double joint_limit_margin = 0.0;
+  int joint_limit_joint = 0;           ///< the joint where that minimum occurred
+  /// max_i |q_i(t_end) - q_i(t_end - kPeriod)| (rad): how far the arm fails to repeat its
+  /// motion over the last period of a periodic task (the self-motion's drift); 0 when the run
+  /// is shorter than kSettleTime + kPeriod.
+  double joint_drift_per_period = 0.0;
+  int joint_drift_joint = 0;           ///< the joint where that maximum occurred
+  double peak_torque = 0.0;            ///< max |tau_i| requested over the run (N m)
+  int peak_torque_joint = 0;
+  long clamped_steps = 0;              ///< joint-steps whose torque was clamped to an effort limit
+  double time_reached = 0.0;           ///< simulated time at the end (s)
+};
+
+struct Result {
+  std::vector<Sample> samples;  ///< one per 1 ms step
+  Summary summary;
+  std::string failure;          ///< empty, or what stopped the run early (NaN torque, ...)
+};
+
+/// Runs problem 2's scenario: every 1 ms step, goal.xddot_d = desired_acceleration(t), then
+/// tau = control(state, goal).
+Result run(Controller control, DesiredAcceleration desired_acceleration, const RunOptions& options);
+
+}  // namespace p2
+
+}  // namespace opspace::scenarios

@@ -1,0 +1,138 @@
+// Known-wrong implementations of problem 2. Each changes the reference in one place.
+#include <opspace/euler_params.hpp>
+#include <opspace/hw2/p2.hpp>
+
+#include <cmath>
+
+#include "mutants.hpp"
+
+namespace opspace::mutants {
+
+namespace {
+
+using hw2::p2::Goal;
+using hw2::p2::State;
+using hw2::p2::Vector6d;
+using hw2::p2::Vector7d;
+
+// What each mutant gets wrong in the law.
+struct Mistakes {
+  bool no_feed_forward = false;          // [vdot_d; wdot_d] left out
+  bool E_pinv_at_lambda_d = false;       // every E^+ evaluated at lambda_d
+  bool delta_phi_flipped = false;        // delta_phi = E^+ (lambda_d - lambda)
+  bool no_nullspace_damping = false;     // N0^T (A (-kvj dq) + g) without A (-kvj dq)
+  bool damping_not_projected = false;    // A (-kvj dq) added without N0^T
+};
+
+Vector7d law(const State& s, const Goal& goal, const Mistakes& m) {
+  const Eigen::Vector4d lambda_d = goal.x_d.tail<4>();
+  const Matrix67d E_pinv = representation_matrix_pinv(m.E_pinv_at_lambda_d ? lambda_d : s.lambda);
+  Vector6d error, twist;
+  error << s.x_p - goal.x_d.head<3>(), E_pinv.bottomRightCorner<3, 4>() * (s.lambda - lambda_d);
+  if (m.delta_phi_flipped) error.tail<3>() = -error.tail<3>();
+  twist << s.v, s.w;
+  const Vector6d feed_forward = m.no_feed_forward ? Vector6d::Zero() : Vector6d(E_pinv * goal.xddot_d);
+  const Vector6d F = s.Lambda0 * (-goal.kpx * error - goal.kvx * (twist - E_pinv * goal.xdot_d) + feed_forward) + s.p;
+  const Vector7d damping = s.A * (-goal.kvj * s.dq);
+  Vector7d tau = s.J0.transpose() * F + s.N0.transpose() * s.g;
+  if (m.damping_not_projected) {
+    tau += damping;
+  } else if (!m.no_nullspace_damping) {
+    tau += s.N0.transpose() * damping;
+  }
+  return tau;
+}
+
+Vector7d without_feed_forward(const State& s, const Goal& goal) {
+  Mistakes m;
+  m.no_feed_forward = true;
+  return law(s, goal, m);
+}
+
+Vector7d E_pinv_at_lambda_d(const State& s, const Goal& goal) {
+  Mistakes m;
+  m.E_pinv_at_lambda_d = true;
+  return law(s, goal, m);
+}
+
+Vector7d delta_phi_flipped(const State& s, const Goal& goal) {
+  Mistakes m;
+  m.delta_phi_flipped = true;
+  return law(s, goal, m);
+}
+
+Vector7d without_nullspace_damping(const State& s, const Goal& goal) {
+  Mistakes m;
+  m.no_nullspace_damping = true;
+  return law(s, goal, m);
+}
+
+Vector7d damping_not_projected(const State& s, const Goal& goal) {
+  Mistakes m;
+  m.damping_not_projected = true;
+  return law(s, goal, m);
+}
+
+// 2(a) with the chain rule half done: d^2/dt^2 sin(a) taken as cos(a) a'', the -sin(a) a'^2
+// term forgotten (and likewise for cos(a)).
+Vector7d acceleration_without_a_dot_squared(double t) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double w = 2 * kPi / 5, s = 1 / std::sqrt(2.0);
+  const double a = kPi / 4 * std::cos(w * t), a_dot = -kPi / 4 * w * std::sin(w * t);
+  Vector7d wrong = hw2::p2::desired_acceleration(t);
+  const double sin_term = -std::sin(a) * a_dot * a_dot, cos_term = -std::cos(a) * a_dot * a_dot;
+  wrong.tail<4>() -= s * Eigen::Vector4d(sin_term, cos_term, sin_term, cos_term);
+  return wrong;
+}
+
+}  // namespace
+
+std::vector<Mutant> p2_mutants() {
+  const std::string a = "a. xddot_d is the second time derivative of x_d(t), as in the closed forms of 2(a)";
+  const std::string law =
+      "c. the controller applies J0^T (Lambda0 (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ xdot_d) "
+      "+ [vdot_d; wdot_d]) + p) + N0^T (A (-kvj dq) + g)";
+  const std::string position = "d. in simulation link7's origin follows the desired position within 1 mm RMS after 1 s";
+  const std::string orientation =
+      "d. in simulation link7's orientation follows lambda_d within 0.01 rad RMS after 1 s";
+  const std::string continuous =
+      "d. in simulation lambda stays unit and continuous: link7 never turns half a turn from lambda_d";
+  const std::string limits = "d. in simulation no joint goes more than 5 degrees past its URDF limit";
+  const std::string drift =
+      "d. in simulation the arm repeats its motion every period: the null-space self-motion is damped";
+  return {
+      // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation
+      // (closed forms in tests/graded/p2.cpp); the arm still moves as it should otherwise.
+      {"no feed-forward acceleration [vdot_d; wdot_d]",
+       [](grading::Hw2Api& api) { api.p2.control = &without_feed_forward; },
+       {law, position, orientation}},
+      // For unit Euler parameters delta_phi is the same at lambda_d (test_euler_params.cpp), and
+      // E^+(lambda_d) xdot_d differs from E^+(lambda) xdot_d only to second order in the
+      // tracking error: in simulation the mistake is invisible, only the law test sees it.
+      {"E^+ evaluated at lambda_d instead of the current lambda",
+       [](grading::Hw2Api& api) { api.p2.control = &E_pinv_at_lambda_d; },
+       {law}},
+      // Positive orientation feedback: link7 turns away from lambda_d until the error reaches
+      // 180 degrees (lambda flips), the arm swings far off its path and past joint limits.
+      {"delta_phi with the wrong sign, E^+ (lambda_d - lambda)",
+       [](grading::Hw2Api& api) { api.p2.control = &delta_phi_flipped; },
+       {law, position, orientation, continuous, limits, drift}},
+      // The task is still tracked, but the elbow's self-motion is undamped: the arm's posture
+      // wanders by tens of degrees per period.
+      {"no null-space damping N0^T A (-kvj dq)",
+       [](grading::Hw2Api& api) { api.p2.control = &without_nullspace_damping; },
+       {law, drift}},
+      // A (-kvj dq) unprojected damps the task motion too: the arm lags by centimetres.
+      {"joint damping A (-kvj dq) added without the projector N0^T",
+       [](grading::Hw2Api& api) { api.p2.control = &damping_not_projected; },
+       {law, position, orientation}},
+      // The run feeds the student's 2(a) to the controller, yet the missing terms are
+      // -a'^2 lambda_d, along lambda_d: the part of lambdaddot_d that only keeps |lambda_d| = 1,
+      // which E_r^+ (E_r^T lambda = 0) projects away. Only the formula test sees it.
+      {"2(a) without the -sin(a) a'^2 term of the chain rule",
+       [](grading::Hw2Api& api) { api.p2.desired_acceleration = &acceleration_without_a_dot_squared; },
+       {a}},
+  };
+}
+
+}  // namespace opspace::mutants
