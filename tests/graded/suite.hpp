@@ -22,6 +22,9 @@ Problem problem_1a();
 /// Problem 1b: PUMA tip control and null-space motion, in simulation (p1b.cpp).
 Problem problem_1b();
 
+/// Problem 4: singularities of the 3R elbow arm, analysed and controlled in simulation (p4.cpp).
+Problem problem_4();
+
 /// Every problem, in the order of the problem set.
 std::vector<Problem> graded_suite();
 

@@ -22,6 +22,9 @@ std::vector<Mutant> p1a_mutants();
 /// Mistakes in problem 1b.
 std::vector<Mutant> p1b_mutants();
 
+/// Mistakes in problem 4.
+std::vector<Mutant> p4_mutants();
+
 /// Every known mistake.
 std::vector<Mutant> all_mutants();
 
