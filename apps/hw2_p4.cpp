@@ -31,9 +31,9 @@ int usage(const char* program, int code) {
   return code;
 }
 
-std::string vec(const Eigen::Vector3d& v) {
+std::string vec(const Eigen::Vector3d& v, int digits = 3) {
   std::ostringstream s;
-  s << std::fixed << std::setprecision(3) << "(" << v(0) << ", " << v(1) << ", " << v(2) << ")";
+  s << std::fixed << std::setprecision(digits) << "(" << v(0) << ", " << v(1) << ", " << v(2) << ")";
   return s.str();
 }
 
@@ -95,7 +95,7 @@ void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain
   if (!mine.samples.empty() && !plain.samples.empty()) {
     const Eigen::Vector3d qa = mine.samples.back().q * 180.0 / 3.14159265358979323846;
     const Eigen::Vector3d qb = plain.samples.back().q * 180.0 / 3.14159265358979323846;
-    row("final joint angles (deg)", vec(qa).substr(0, 21), vec(qb));
+    row("final joint angles (deg)", vec(qa, 1), vec(qb, 1));
   }
   if (!mine.failure.empty()) std::cout << "  your run stopped early: " << mine.failure << "\n";
   if (!plain.failure.empty()) std::cout << "  the plain run stopped early: " << plain.failure << "\n";
