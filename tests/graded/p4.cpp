@@ -243,8 +243,8 @@ void law(const Hw2Api& api, Check& check) {
   p4::Observer observer(rrr());
   for (Target target : {Target::kAlongZ0, Target::kAlongY0}) {
     for (int k = 0; k < kSamples; ++k) {
-      // Around the start, some states inside the robust tolerance (singular directions
-      // dropped), some outside; random goals and gains, so no hard-coded number can pass.
+      // Within 0.3 rad of each start, close to the locks where the robust Lambda_v matters;
+      // random goals and gains, so that no hard-coded number can pass.
       const Eigen::Vector3d q = p4::initial_q(target) + Eigen::Vector3d(rng.vector(3, -0.3, 0.3));
       const Eigen::Vector3d dq = rng.vector(3, -1.0, 1.0);
       const hw2::p4::State& s = observer.observe(0.0, q, dq);

@@ -95,7 +95,7 @@ TEST_CASE("directions splits space at singular values above tol times the larges
   }
 }
 
-TEST_CASE("at theta = (0, 90 deg, 0) only X0 moves; Z0 is a Type I and Y0 a Type II singularity") {
+TEST_CASE("at theta = (0, 90 deg, 0) only X0 moves, Z0 is a Type I and Y0 a Type II singularity") {
   const opspace::Model rrr = opspace::load_urdf(opspace::robot_path("rrr.urdf"));
   opspace::Data data(rrr);
   const int tip = rrr.frame_id("end-effector");
