@@ -160,8 +160,11 @@ const hw2::p4::State& Observer::observe(double t, const Eigen::Ref<const Eigen::
 }
 
 Eigen::Vector3d plain_control(const hw2::p4::State& s, const TaskSpace& exact, const hw2::p4::Goal& goal) {
-  const Eigen::Vector3d F = exact.Lambda * (-goal.kpx * (s.x - goal.x_d) - goal.kvx * s.dx) + exact.p;
-  return s.Jv.transpose() * F + exact.N.transpose() * (s.A * (-goal.kvj * s.dq) + s.g);
+  // Fixed-size copies: a product with the dynamic-size TaskSpace matrices would allocate.
+  const Eigen::Matrix3d Lambda = exact.Lambda, N = exact.N;
+  const Eigen::Vector3d p = exact.p;
+  const Eigen::Vector3d F = Lambda * (-goal.kpx * (s.x - goal.x_d) - goal.kvx * s.dx) + p;
+  return s.Jv.transpose() * F + N.transpose() * (s.A * (-goal.kvj * s.dq) + s.g);
 }
 
 std::string describe(Target target) {
