@@ -6,6 +6,7 @@
 #include <opspace/hw2/p1a.hpp>
 #include <opspace/hw2/p1b.hpp>
 #include <opspace/hw2/p2.hpp>
+#include <opspace/hw2/p4.hpp>
 
 namespace opspace::grading {
 
@@ -34,11 +35,22 @@ struct P2Api {
   decltype(&hw2::p2::control) control;
 };
 
+/// Problem 4 (lib/include/opspace/hw2/p4.hpp).
+struct P4Api {
+  decltype(&hw2::p4::degrees_of_freedom) degrees_of_freedom;
+  decltype(&hw2::p4::singular_directions) singular_directions;
+  decltype(&hw2::p4::moving_directions) moving_directions;
+  decltype(&hw2::p4::rotation_axes) rotation_axes;
+  decltype(&hw2::p4::singularity_type) singularity_type;
+  decltype(&hw2::p4::control) control;
+};
+
 /// Every graded function of problem set 2.
 struct Hw2Api {
   P1aApi p1a;
   P1bApi p1b;
   P2Api p2;
+  P4Api p4;
 };
 
 /// The implementation linked into this program: exercises/ in hw2-grade, solutions/ in
@@ -51,6 +63,8 @@ inline Hw2Api linked_api() {
              &p1a::nullspace_projector, &p1a::inverse_kinematics_step, &p1a::split_displacement};
   api.p1b = {&hw2::p1b::control};
   api.p2 = {&hw2::p2::desired_acceleration, &hw2::p2::desired_twist_acceleration, &hw2::p2::control};
+  api.p4 = {&hw2::p4::degrees_of_freedom, &hw2::p4::singular_directions, &hw2::p4::moving_directions,
+            &hw2::p4::rotation_axes,      &hw2::p4::singularity_type,    &hw2::p4::control};
   return api;
 }
 

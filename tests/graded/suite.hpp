@@ -24,6 +24,8 @@ Problem problem_1b();
 
 /// Problem 2: iiwa position and Euler-parameter tracking, in simulation (p2.cpp).
 Problem problem_2();
+/// Problem 4: singularities of the 3R elbow arm, analysed and controlled in simulation (p4.cpp).
+Problem problem_4();
 
 /// Every problem, in the order of the problem set.
 std::vector<Problem> graded_suite();

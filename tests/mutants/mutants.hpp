@@ -24,6 +24,8 @@ std::vector<Mutant> p1b_mutants();
 
 /// Mistakes in problem 2.
 std::vector<Mutant> p2_mutants();
+/// Mistakes in problem 4.
+std::vector<Mutant> p4_mutants();
 
 /// Every known mistake.
 std::vector<Mutant> all_mutants();

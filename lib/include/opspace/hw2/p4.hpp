@@ -1,0 +1,89 @@
+/// @file hw2/p4.hpp
+/// Problem 4: the singularities of the 3R elbow arm (robots/rrr.urdf), analysed (questions
+/// i-iv) and controlled (question v). Declared here, written by the student in
+/// exercises/p4.cpp, by the instructor in solutions/p4.cpp.
+#pragma once
+
+#include <Eigen/Dense>  // everything a student may need: JacobiSVD, eigen solvers, inverse()
+#include <array>
+
+#include "opspace/singularity.hpp"  // SingularityType, kSingularValueTolerance
+
+namespace opspace::hw2::p4 {
+
+using opspace::SingularityType;
+
+/// sigma_i <= kTolerance * sigma_max counts as a vanishing singular value.
+inline constexpr double kTolerance = opspace::kSingularValueTolerance;
+/// Question v: the elbow angle of the retracted arm, the minimum of the potential for Z0 (rad).
+inline constexpr double kRetractedElbow = 1.5707963267948966;
+/// Question v: the angle joint 1 is driven to for Y0 (rad): 90 deg.
+inline constexpr double kTurnedJoint1 = 1.5707963267948966;
+
+/// The tip's kinematics at one configuration, computed by the library (base frame {0}).
+struct Kinematics {
+  Eigen::Vector3d q;        ///< joint angles (rad)
+  Eigen::Vector3d x;        ///< tip position (m)
+  Eigen::Matrix3d Jv, Jw;   ///< linear and angular Jacobians: v = Jv dq, w = Jw dq
+  /// Hessians of the tip coordinates: H[k](i, j) = d^2 x_k / dq_i dq_j (k = 0, 1, 2 for
+  /// X0, Y0, Z0). The tip accelerates by xdd_k = Jv.row(k) qdd + dq^T H[k] dq.
+  std::array<Eigen::Matrix3d, 3> H;
+};
+
+/// A set of orthonormal directions in {0}: the first `count` columns of `u`.
+struct Directions {
+  int count = 0;
+  Eigen::Matrix3d u = Eigen::Matrix3d::Zero();
+};
+
+/// i. How many degrees of freedom the tip has for positioning: the rank of Jv.
+int degrees_of_freedom(const Kinematics& k);
+
+/// ii. The singular directions: an orthonormal basis of the directions u with u^T Jv = 0.
+Directions singular_directions(const Kinematics& k);
+
+/// iii. The linear directions orthogonal to the singular ones (the tip can move along them).
+Directions moving_directions(const Kinematics& k);
+
+/// iii. The axes the tip can rotate about: an orthonormal basis of range(Jw).
+Directions rotation_axes(const Kinematics& k);
+
+/// iv. kNone if u (unit) is not a singular direction; kTypeI if some self-motion dq_n
+/// (Jv dq_n = 0) moves the tip along u at second order (dq_n^T H_u dq_n != 0 with
+/// H_u = sum_k u_k H[k]); kTypeII otherwise.
+SingularityType singularity_type(const Kinematics& k, const Eigen::Vector3d& u);
+
+/// Question v: which singular direction the tip must move along.
+enum class Target {
+  kAlongZ0 = 1,  ///< elbow lock: down along Z0
+  kAlongY0 = 2,  ///< overhead lock: along Y0
+};
+
+/// What the controller knows at one tick, computed by the library from (q, dq).
+struct State {
+  double t = 0.0;              ///< time (s)
+  Eigen::Vector3d q, dq;       ///< joint angles (rad) and velocities (rad/s)
+  Eigen::Vector3d x, dx;       ///< tip position (m) and velocity (m/s)
+  Eigen::Matrix3d Jv;          ///< tip Jacobian: dx = Jv dq
+  Eigen::Matrix3d A;           ///< joint-space mass matrix
+  Eigen::Vector3d g;           ///< gravity torques
+  /// Singularity-robust task quantities: the eigenvalues of Lambda_v^-1 = Jv A^-1 Jv^T below
+  /// scenarios::p4::kRobustTolerance times the largest are dropped, so near a singularity
+  /// Lambda_v commands no force along the (nearly) singular directions, and N lets the
+  /// self-motion torques act along them.
+  Eigen::Matrix3d Lambda_v;    ///< task inertia
+  Eigen::Matrix3d Jbar_v;      ///< dynamically consistent inverse A^-1 Jv^T Lambda_v
+  Eigen::Matrix3d N;           ///< null-space projector I - Jbar_v Jv (N^T acts on torques)
+  Eigen::Vector3d p;           ///< gravity at the tip, Jbar_v^T g
+};
+
+/// The target and gains (values in scenarios/p4.hpp).
+struct Goal {
+  Eigen::Vector3d x_d;  ///< desired tip position (m)
+  double kpx = 0, kvx = 0, kpj = 0, kvj = 0;
+};
+
+/// v. The joint torques that move the tip to goal.x_d along the singular direction `target`.
+Eigen::Vector3d control(Target target, const State& state, const Goal& goal);
+
+}  // namespace opspace::hw2::p4

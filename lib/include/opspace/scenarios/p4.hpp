@@ -1,0 +1,113 @@
+/// @file scenarios/p4.hpp
+/// Problem 4: the 3R elbow arm near its singular pose theta = (0, 90 deg, 0) (problem set,
+/// shared robots.md), the kinematics of questions i-iv, and question v's closed-loop runs on
+/// the simulation, with the student's controller or the plain operational-space controller.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "opspace/hw2/p4.hpp"
+#include "opspace/kinematics.hpp"
+#include "opspace/model.hpp"
+#include "opspace/opspace.hpp"
+#include "opspace/scenarios/common.hpp"
+
+namespace opspace::scenarios {
+
+namespace p4 {
+
+using hw2::p4::Target;
+
+inline constexpr const char* kRobotFile = "rrr.urdf";
+inline constexpr const char* kTipLink = "end-effector";
+/// Relative eigenvalue cut-off of the State's robust Lambda_v. A direction whose eigenvalue of
+/// Jv A^-1 Jv^T is below 1% of the largest is dropped: the PD force along it would cost
+/// torques of order m kpx |x - x_d| / sigma, beyond the 50 N m limits of the arm for a
+/// singular value sigma below about a tenth of the largest (docs/problem4.md).
+inline constexpr double kRobustTolerance = 1e-2;
+/// Distance of the target from the start along the singular direction (m).
+inline constexpr double kTargetDistance = 0.1;
+/// The tip has reached x_d once |x - x_d| stays below this (m).
+inline constexpr double kReachTolerance = 5e-3;
+/// Simulated seconds of a run.
+inline constexpr double kDuration = 3.0;
+
+/// The tip: the origin of link `end-effector`, the far end of the forearm.
+Eigen::Vector3d tip_point();
+/// theta = (0, 90 deg, 0): the arm straight up, elbow lock and overhead lock together.
+Eigen::Vector3d singular_q();
+/// q(0), at rest, with the tip exactly above the base (overhead lock): for kAlongZ0
+/// (0, 89 deg, 2 deg), the elbow 2 deg from the elbow lock; for kAlongY0 (0, 80 deg, 20 deg),
+/// the elbow bent enough that the target 10 cm along Y0 is within reach (from the stretched
+/// arm at the top of the workspace the tip cannot move sideways without coming down).
+Eigen::Vector3d initial_q(Target target);
+/// The tip's Jv, Jw and position Hessians at q (questions i-iv).
+hw2::p4::Kinematics kinematics(const Model& rrr, Data& data, const Eigen::Ref<const Eigen::Vector3d>& q);
+/// x_d = x(initial_q(target)) - kTargetDistance Z0 or + kTargetDistance Y0; kpx = kpj = 50, kvx = kvj = 20.
+hw2::p4::Goal goal(Target target);
+
+/// Computes the controller's State from (t, q, dq), and the exact task quantities
+/// (kTaskInertiaTolerance) of the plain controller. Its workspaces are sized once; per call
+/// only operational_space() still allocates (5 temporaries per call, measured: an open issue
+/// of opspace.cpp, shared with problem 1b's Observer).
+class Observer {
+ public:
+  explicit Observer(const Model& rrr);
+  const hw2::p4::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
+                                const Eigen::Ref<const Eigen::VectorXd>& dq);
+  /// Lambda, Jbar, N, p of the last observe() with the default (tiny) tolerance.
+  const TaskSpace& exact() const { return exact_; }
+
+ private:
+  const Model& model_;
+  Data data_;
+  TaskSpace robust_, exact_;
+  Matrix6Xd J0_;
+  int tip_frame_;
+  hw2::p4::State state_;
+};
+
+/// The plain operational-space controller: no self-motion potential, exact Lambda:
+///   Gamma = Jv^T (Lambda (-kpx (x - x_d) - kvx dx) + p) + N^T (A (-kvj dq) + g).
+Eigen::Vector3d plain_control(const hw2::p4::State& s, const TaskSpace& exact, const hw2::p4::Goal& goal);
+
+/// The control function under test: exercises/ or solutions/ (hw2::p4::control), or a mutant.
+using Controller = Eigen::Vector3d (*)(Target, const hw2::p4::State&, const hw2::p4::Goal&);
+
+/// One simulated instant.
+struct Sample {
+  double t = 0.0;
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();    ///< tip position
+  Eigen::Vector3d q = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tau = Eigen::Vector3d::Zero();  ///< requested torques
+};
+
+/// What a run measured.
+struct Summary {
+  double final_error = 0.0;   ///< |x - x_d| at the end (m)
+  double reach_time = -1.0;   ///< from when on |x - x_d| <= kReachTolerance (s); -1: never
+  double peak_torque = 0.0;   ///< max |tau_i| requested over the run (N m)
+  int peak_torque_joint = 0;
+  long clamped_steps = 0;     ///< joint-steps whose torque was clamped to the effort limit
+  double time_reached = 0.0;  ///< simulated time at the end (s)
+};
+
+struct Result {
+  std::vector<Sample> samples;  ///< one per 1 ms step
+  Summary summary;
+  std::string failure;          ///< empty, or what stopped the run early
+};
+
+/// Runs question v's scenario toward `target` with `control` every 1 ms step.
+Result run(Target target, Controller control, const RunOptions& options);
+/// The same from the same start with plain_control().
+Result run_plain(Target target, const RunOptions& options);
+
+/// "along Z0 (elbow lock)" or "along Y0 (overhead lock)", for reports.
+std::string describe(Target target);
+
+}  // namespace p4
+
+}  // namespace opspace::scenarios

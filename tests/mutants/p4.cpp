@@ -1,0 +1,88 @@
+// Known-wrong answers of problem 4. Each changes the reference in one place.
+#include <opspace/hw2/p4.hpp>
+
+#include "mutants.hpp"
+
+namespace opspace::mutants {
+
+namespace {
+
+using hw2::p4::Directions;
+using hw2::p4::Goal;
+using hw2::p4::Kinematics;
+using hw2::p4::State;
+using hw2::p4::Target;
+
+// ii. The singular directions taken from V (joint space) instead of U (the tip's space).
+Directions singular_directions_from_v(const Kinematics& k) {
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(k.Jv, Eigen::ComputeFullV);
+  const Eigen::Vector3d s = svd.singularValues();
+  int rank = 0;
+  for (int i = 0; i < 3; ++i) rank += s(i) > hw2::p4::kTolerance * s(0) ? 1 : 0;
+  Directions d;
+  d.count = 3 - rank;
+  d.u.leftCols(d.count) = svd.matrixV().rightCols(d.count);
+  return d;
+}
+
+// iv. The second-order test over every joint motion instead of the self-motions: H_u != 0.
+SingularityType type_over_all_joint_motions(const Kinematics& k, const Eigen::Vector3d& u) {
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(k.Jv);
+  const double sigma_max = svd.singularValues()(0);
+  if ((k.Jv.transpose() * u).norm() > hw2::p4::kTolerance * sigma_max) return SingularityType::kNone;
+  const Eigen::Matrix3d H_u = u(0) * k.H[0] + u(1) * k.H[1] + u(2) * k.H[2];
+  return H_u.cwiseAbs().maxCoeff() > hw2::p4::kTolerance * sigma_max ? SingularityType::kTypeI
+                                                                       : SingularityType::kTypeII;
+}
+
+// v. The two potentials swapped: joint 1 turned for Z0, the arm retracted for Y0.
+Eigen::Vector3d potentials_swapped(Target target, const State& s, const Goal& goal) {
+  return hw2::p4::control(target == Target::kAlongZ0 ? Target::kAlongY0 : Target::kAlongZ0, s, goal);
+}
+
+// v. The Z0 potential with its minimum at the stretched arm (q_d[2] = 0): it pulls the elbow
+// into the lock instead of out of it.
+Eigen::Vector3d z0_potential_stretches(Target target, const State& s, const Goal& goal) {
+  const Eigen::Vector3d tau = hw2::p4::control(target, s, goal);
+  if (target != Target::kAlongZ0) return tau;
+  // The reference pulls joint 3 toward kRetractedElbow; move that minimum to 0.
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  shift(2) = -goal.kpj * hw2::p4::kRetractedElbow;  // -kpj (q3 - 0) = -kpj (q3 - q3r) - kpj q3r
+  return tau + s.N.transpose() * (s.A * shift);
+}
+
+}  // namespace
+
+std::vector<Mutant> p4_mutants() {
+  const std::string dirs = "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null "
+                           "space of Jv elsewhere";
+  const std::string types0 = "iv. at theta = (0, 90 deg, 0) the elbow lock Z0 is Type I and the overhead lock "
+                             "Y0 Type II";
+  const std::string types = "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one";
+  const std::string law = "v. the controller applies Jv^T F + N^T (A (-kpj (q - q_d) - kvj dq) + g) with each "
+                          "target's potential";
+  const std::string simz = "v. in simulation the tip reaches 10 cm down along Z0 within 2 s where the plain "
+                           "controller saturates";
+  const std::string simy = "v. in simulation the tip reaches 10 cm along Y0 within 2 s where the plain controller "
+                           "never does";
+  return {
+      {"singular directions from the right singular vectors V",
+       [](grading::Hw2Api& api) { api.p4.singular_directions = &singular_directions_from_v; },
+       {dirs}},
+      // Every overhead lock then looks Type I: joint 1 combined with joint 2 does move the tip
+      // along the plane's normal at second order, but that motion is not a self-motion.
+      {"Type I/II tested over all joint motions, not the self-motions",
+       [](grading::Hw2Api& api) { api.p4.singularity_type = &type_over_all_joint_motions; },
+       {types0, types}},
+      // Turning joint 1 does not unlock a stretched elbow, and retracting the arm does not turn
+      // its plane: neither target is reached.
+      {"the Z0 and Y0 potentials swapped",
+       [](grading::Hw2Api& api) { api.p4.control = &potentials_swapped; },
+       {law, simz, simy}},
+      {"the Z0 potential's minimum at the stretched arm",
+       [](grading::Hw2Api& api) { api.p4.control = &z0_potential_stretches; },
+       {law, simz}},
+  };
+}
+
+}  // namespace opspace::mutants
