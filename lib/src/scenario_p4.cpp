@@ -160,7 +160,7 @@ const hw2::p4::State& Observer::observe(double t, const Eigen::Ref<const Eigen::
 }
 
 Eigen::Vector3d plain_control(const hw2::p4::State& s, const TaskSpace& exact, const hw2::p4::Goal& goal) {
-  // Fixed-size copies: a product with the dynamic-size TaskSpace matrices would allocate.
+  // Fixed-size copies of the TaskSpace results, for fixed-size products.
   const Eigen::Matrix3d Lambda = exact.Lambda, N = exact.N;
   const Eigen::Vector3d p = exact.p;
   const Eigen::Vector3d F = Lambda * (-goal.kpx * (s.x - goal.x_d) - goal.kvx * s.dx) + p;
