@@ -133,7 +133,9 @@ void write_script(const Figure& f, const fs::path& path, const std::string& stem
      << "set grid lc rgb '#dddddd'\n"
      << "set key outside right top samplen 2\n"
      << "set border lc rgb '#555555'\n"
-     << "set lmargin 12\n";
+     // Fixed margins: the panels of a figure line up whatever their tick labels and legends.
+     << "set lmargin 12\n"
+     << "set rmargin 30\n";
   gp << "set terminal pngcairo noenhanced size " << f.width << "," << height << " font 'sans,10'\n"
      << "set output " << file_literal(stem + ".png") << "\n";
   write_body(gp, f, stem + ".dat");

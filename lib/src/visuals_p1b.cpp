@@ -117,10 +117,9 @@ plot::Figure compare_figure(const Result& part2, const Result& part3) {
   plot::Panel& tip = f.panel("tip drift |x - x_d| (log scale): only the dynamically consistent projector holds the tip",
                              "mm");
   tip.log_y = true;
-  tip.add(short_name(Part::kPseudoInverseNullspace) + ": pseudo-inverse projector", times(part2), tip_error_mm(part2))
-      .color = kPart2;
-  tip.add(short_name(Part::kDynamicallyConsistentNullspace) + ": dynamically consistent projector", times(part3),
-          tip_error_mm(part3))
+  tip.add(short_name(Part::kPseudoInverseNullspace) + " (pseudo-inverse)", times(part2), tip_error_mm(part2)).color =
+      kPart2;
+  tip.add(short_name(Part::kDynamicallyConsistentNullspace) + " (dyn. consistent)", times(part3), tip_error_mm(part3))
       .color = kPart3;
   plot::Panel& q2 = f.panel("joint 2 against q2_d", "rad");
   q2.add("PART2 q2", times(part2), column(part2, [](const Sample& s) { return s.q(1); })).color = kPart2;
