@@ -125,6 +125,10 @@ int main(int argc, char** argv) {
     const p1b::Result result = p1b::run(part, &opspace::hw2::p1b::control, options);
     print_summary(result, options.csv_path);
     // After the run: drawing never slows the control loop.
+    if (result.samples.empty()) {
+      std::cout << "note:   no plots or replay: the run logged no sample\n";
+      return 1;
+    }
     const std::vector<opspace::plot::Figure> figures =
         pictures.plots ? p1b::figures(result, part) : std::vector<opspace::plot::Figure>{};
     if (pictures.replay) {

@@ -25,7 +25,8 @@ struct Published {
 
 /// Draws `figures` as <prefix>-<figure>.png/.svg and, when `scene` is given, writes
 /// <prefix>-replay.html; prints "plot:   PATH", "replay: PATH" and any "note: ..." lines to
-/// `out`. A missing gnuplot or viewer bundle is a note, never an error.
+/// `out`. A missing gnuplot or viewer bundle, or a picture that cannot be written, is a
+/// note, never an error: this function does not throw.
 Published publish(const std::vector<plot::Figure>& figures, const replay::Scene* scene,
                   const std::string& prefix, std::ostream& out);
 
