@@ -127,6 +127,12 @@ void write_script(const Figure& f, const fs::path& path, const std::string& stem
   if (!gp) throw std::runtime_error("cannot write the gnuplot script " + path.string());
   const int rows = static_cast<int>((f.panels.size() + std::max(1, f.columns) - 1) / std::max(1, f.columns));
   const int height = std::max(1, rows) * f.row_height + 40;
+  // The legend sits right of each panel: as wide as the longest entry plus its line sample.
+  std::size_t longest = 4;
+  for (const Panel& p : f.panels) {
+    for (const Series& s : p.series) longest = std::max(longest, s.title.size());
+    for (const Level& l : p.levels) longest = std::max(longest, l.title.size());
+  }
   gp << "# " << f.title << "\n"
      << "# Written by opspace (lib/src/plot.cpp). Redraw from this folder: gnuplot " << stem << ".gp\n"
      << "set encoding utf8\n"
@@ -135,7 +141,7 @@ void write_script(const Figure& f, const fs::path& path, const std::string& stem
      << "set border lc rgb '#555555'\n"
      // Fixed margins: the panels of a figure line up whatever their tick labels and legends.
      << "set lmargin 12\n"
-     << "set rmargin 30\n";
+     << "set rmargin " << longest + 8 << "\n";
   gp << "set terminal pngcairo noenhanced size " << f.width << "," << height << " font 'sans,10'\n"
      << "set output " << file_literal(stem + ".png") << "\n";
   write_body(gp, f, stem + ".dat");
