@@ -1,0 +1,33 @@
+/// @file visuals.hpp
+/// What a program leaves after its run besides the CSV log: the plots (plot.hpp) and the 3D
+/// replay page (replay.hpp), named after the log, their paths printed. Called once the run
+/// is over, so that the control loop never waits on it.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "opspace/plot.hpp"
+#include "opspace/replay.hpp"
+
+namespace opspace::visuals {
+
+/// "out/hw2-p1-part3.csv" -> "out/hw2-p1-part3": the stem every picture of a run starts with.
+std::string prefix_of(const std::string& csv_path);
+
+/// Files written by publish().
+struct Published {
+  std::vector<std::string> images;  ///< PNG and SVG plots
+  std::string page;                 ///< the replay page, or empty
+  std::vector<std::string> skipped; ///< why something was not made (no gnuplot, no bundle)
+};
+
+/// Draws `figures` as <prefix>-<figure>.png/.svg and, when `scene` is given, writes
+/// <prefix>-replay.html; prints "plot:   PATH", "replay: PATH" and any "note: ..." lines to
+/// `out`. A missing gnuplot or viewer bundle, or a picture that cannot be written, is a
+/// note, never an error: this function does not throw.
+Published publish(const std::vector<plot::Figure>& figures, const replay::Scene* scene,
+                  const std::string& prefix, std::ostream& out);
+
+}  // namespace opspace::visuals

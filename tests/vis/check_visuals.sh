@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# The pictures of a run, checked as a user meets them: run a program, read the paths it
+# prints, open the files. Called by ctest (tests/vis/CMakeLists.txt):
+#   check_visuals.sh plots      PROGRAM WORKDIR             PNG + SVG named as printed, non-empty
+#   check_visuals.sh no-gnuplot PROGRAM WORKDIR             without gnuplot: a note, exit 0, data kept
+#   check_visuals.sh compare    PROGRAM WORKDIR             hw2-p1 compare draws the drift overlay
+#   check_visuals.sh replay     PROGRAM WORKDIR NODE CHECK_SCRIPT SCREENSHOT
+#                                                           the page in headless Chromium
+# Exit 77 (ctest: skipped) when gnuplot, node, the viewer bundle or Chromium is missing,
+# unless CI is set: CI installs them (scripts/setup.sh), so there a missing tool fails.
+set -uo pipefail
+mode=$1 program=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+skip() {
+  if [ -n "${CI:-}" ]; then fail "$* (CI is set: scripts/setup.sh should have installed it)"; fi
+  echo "SKIP: $*"; exit 77
+}
+# The magic bytes a viewer checks before drawing: PNG signature, SVG/XML opening tag.
+looks_like() {
+  case "$1" in
+    *.png) [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] ;;
+    *.svg) head -c 300 "$1" | grep -q '<svg\|<?xml' ;;
+    *) return 1 ;;
+  esac
+}
+check_images() {  # check_images LOG EXPECTED_NAME...
+  local log=$1; shift
+  mapfile -t images < <(sed -n 's/^plot: *//p' "$log")
+  [ ${#images[@]} -gt 0 ] || fail "the program printed no 'plot:' line"
+  for want in "$@"; do
+    printf '%s\n' "${images[@]}" | grep -qx "$want" || fail "expected $want among the printed plots: ${images[*]}"
+  done
+  for image in "${images[@]}"; do
+    [ -s "$image" ] || fail "$image was printed but is missing or empty"
+    looks_like "$image" || fail "$image is not a PNG/SVG file"
+    echo "ok   $image ($(stat -c %s "$image") bytes)"
+  done
+}
+
+case "$mode" in
+  plots)
+    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
+    # 3 simulated seconds: every figure has data, the test stays short.
+    (cd "$work" && "$program" 3 --duration 3 --csv run/p3.csv --no-replay) > "$work/out.txt" 2>&1 ||
+      { cat "$work/out.txt"; fail "$program 3 failed"; }
+    cat "$work/out.txt"
+    cd "$work"
+    expected=()
+    for f in tip error q2 torques; do expected+=("run/p3-$f.png" "run/p3-$f.svg"); done
+    check_images out.txt "${expected[@]}"
+    ;;
+  no-gnuplot)
+    (cd "$work" && OPSPACE_GNUPLOT=/nonexistent/gnuplot "$program" 1 --duration 1 --csv run/p1.csv --no-replay) \
+      > "$work/out.txt" 2>&1 || { cat "$work/out.txt"; fail "$program must not fail without gnuplot"; }
+    cat "$work/out.txt"
+    grep -q '^note: .*gnuplot was not found' "$work/out.txt" || fail "no note that gnuplot is missing"
+    ! grep -q '^plot:' "$work/out.txt" || fail "a plot was printed although gnuplot is missing"
+    [ -s "$work/run/p1-tip.gp" ] && [ -s "$work/run/p1-tip.dat" ] || fail "the gnuplot script and data were not kept"
+    ;;
+  compare)
+    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
+    # 3 s: PART2's tip drifts from the first second on (docs/problem1b.md).
+    (cd "$work" && "$program" compare --duration 3 --csv run/cmp.csv) > "$work/out.txt" 2>&1 ||
+      { cat "$work/out.txt"; fail "$program compare failed"; }
+    cat "$work/out.txt"
+    cd "$work"
+    check_images out.txt run/cmp-drift.png run/cmp-drift.svg
+    [ -s run/cmp-part2.csv ] && [ -s run/cmp-part3.csv ] || fail "the two logs were not written"
+    ;;
+  replay)
+    node=$4 check=$5 screenshot=$6
+    [ -x "$node" ] || skip "node is not installed: the replay viewer cannot be bundled or checked"
+    [ -x "${CHROMIUM:-/usr/bin/chromium}" ] || skip "Chromium is not installed (apt-get install chromium)"
+    # 4 s at 50 frames/s: 200 frames, enough motion of joint 2 to see.
+    (cd "$work" && "$program" 3 --duration 4 --csv run/p3.csv --no-plots) > "$work/out.txt" 2>&1 ||
+      { cat "$work/out.txt"; fail "$program 3 failed"; }
+    cat "$work/out.txt"
+    if grep -q '^note: no 3D replay' "$work/out.txt"; then skip "the viewer bundle was not built (see the note above)"; fi
+    page=$(sed -n 's/^replay: *//p' "$work/out.txt")
+    [ -n "$page" ] || fail "no 'replay:' line printed"
+    [ -s "$work/$page" ] || fail "$page was printed but is missing or empty"
+    [ -f "$check" ] || skip "$check is missing: the viewer's npm packages were not installed"
+    mkdir -p "$(dirname "$screenshot")"
+    "$node" "$check" "$work/$page" "$screenshot"
+    status=$?
+    [ $status -eq 77 ] && skip "Chromium could not be started"
+    [ $status -eq 0 ] || fail "the replay page failed in headless Chromium"
+    [ -s "$screenshot" ] || fail "no screenshot"
+    ;;
+  *) fail "unknown mode $mode" ;;
+esac
+echo "passed"
