@@ -38,6 +38,9 @@ opspace_install_packages() {
   local missing optional
   mapfile -t missing < <(opspace_missing "${OPSPACE_PACKAGES[@]}")
   mapfile -t optional < <(opspace_missing "${OPSPACE_OPTIONAL_PACKAGES[@]}")
+  # Optional packages that could not be installed once are not retried on every command.
+  local optional_failed="$OPSPACE_ROOT/build/optional-packages-failed"
+  [ -f "$optional_failed" ] && optional=()
   [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
 
   local as_root=()
@@ -62,8 +65,11 @@ opspace_install_packages() {
   fi
   if [ ${#optional[@]} -gt 0 ]; then
     opspace_say "installing Debian packages for plots and the 3D replay: ${optional[*]}"
-    "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${optional[@]}" ||
+    if ! "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${optional[@]}"; then
       opspace_say "could not install ${optional[*]}: the programs will skip the pictures they cannot make (docs/visuals.md)"
+      opspace_say "(not retried; delete $optional_failed to try again)"
+      mkdir -p "$(dirname "$optional_failed")" && : > "$optional_failed"
+    fi
   fi
 }
 
