@@ -1,6 +1,7 @@
 // A whole control tick allocates nothing on the heap: the library computes the controller's
 // State (kinematics, A, g, Lambda, Jbar, p) and the reference law turns it into torques,
-// with fixed-size matrices and workspaces sized once. (Linked with solutions/.)
+// with fixed-size matrices and workspaces sized once, for problems 1b, 2 and 4. (Linked with
+// solutions/.)
 #include <doctest/doctest.h>
 
 #include "opspace/scenarios.hpp"
@@ -23,6 +24,43 @@ TEST_CASE("a problem-1b control tick allocates nothing once its workspaces exist
     const long n = allocations_in([&] {
       const opspace::hw2::p1b::State& s = observer.observe(0.5, q, dq);
       sink += opspace::hw2::p1b::control(part, s, p1b::goal(0.5, s.q));
+    });
+    CHECK_MESSAGE(n == 0, "one tick allocated ", n, " times");
+  }
+  CHECK(sink.allFinite());
+}
+
+TEST_CASE("a problem-2 control tick allocates nothing once its workspaces exist") {
+  namespace p2 = opspace::scenarios::p2;
+  const opspace::Model iiwa = opspace::load_urdf(opspace::robot_path("iiwa7.urdf"));
+  p2::Observer observer(iiwa);
+  const p2::Vector7d q = p2::initial_q();
+  const p2::Vector7d dq = p2::Vector7d::LinSpaced(0.3, -0.2);
+  p2::Vector7d sink = p2::Vector7d::Zero();
+  const long n = allocations_in([&] {
+    const p2::Reference ref = p2::desired(0.5);
+    const opspace::hw2::p2::State& s = observer.observe(0.5, q, dq, ref.x.tail<4>());
+    opspace::hw2::p2::Goal goal = p2::goal(0.5);
+    goal.xddot_d = opspace::hw2::p2::desired_acceleration(0.5);
+    sink += opspace::hw2::p2::control(s, goal);
+  });
+  CHECK_MESSAGE(n == 0, "one tick allocated ", n, " times");
+  CHECK(sink.allFinite());
+}
+
+TEST_CASE("a problem-4 control tick allocates nothing once its workspaces exist") {
+  namespace p4 = opspace::scenarios::p4;
+  const opspace::Model rrr = opspace::load_urdf(opspace::robot_path(p4::kRobotFile));
+  p4::Observer observer(rrr);
+  Eigen::Vector3d sink = Eigen::Vector3d::Zero();
+  for (const p4::Target target : {p4::Target::kAlongZ0, p4::Target::kAlongY0}) {
+    const Eigen::Vector3d q = p4::initial_q(target);
+    const Eigen::Vector3d dq(0.1, -0.2, 0.3);
+    const opspace::hw2::p4::Goal goal = p4::goal(target);
+    const long n = allocations_in([&] {
+      const opspace::hw2::p4::State& s = observer.observe(0.5, q, dq);
+      sink += opspace::hw2::p4::control(target, s, goal);
+      sink += p4::plain_control(s, observer.exact(), goal);
     });
     CHECK_MESSAGE(n == 0, "one tick allocated ", n, " times");
   }
