@@ -8,6 +8,8 @@
 
 #include <opspace/hw2/p2.hpp>
 #include <opspace/scenarios.hpp>
+#include <opspace/scenarios/p2_visuals.hpp>
+#include <opspace/visuals.hpp>
 
 namespace {
 
@@ -15,10 +17,12 @@ namespace p2 = opspace::scenarios::p2;
 
 int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
-      << "usage: " << program << " [--duration SECONDS] [--csv PATH]\n"
+      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay]\n"
       << "  link7 of the iiwa tracks x_d(t) and lambda_d(t) of problem 2\n"
       << "  --duration  simulated seconds (default " << p2::kDefaultDuration << ")\n"
-      << "  --csv       log file (default out/hw2-p2.csv)\n";
+      << "  --csv       log file (default out/hw2-p2.csv); plots and the 3D replay page are\n"
+      << "              written next to it, named after it (docs/visuals.md)\n"
+      << "  --no-plots, --no-replay  skip those pictures\n";
   return code;
 }
 
@@ -47,6 +51,7 @@ int main(int argc, char** argv) {
   opspace::scenarios::RunOptions options;
   options.duration = p2::kDefaultDuration;
   options.csv_path = "out/hw2-p2.csv";
+  bool plots = true, replay = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -60,6 +65,10 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--csv" && i + 1 < argc) {
       options.csv_path = argv[++i];
+    } else if (arg == "--no-plots") {
+      plots = false;
+    } else if (arg == "--no-replay") {
+      replay = false;
     } else {
       std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
       return usage(argv[0], 2);
@@ -71,6 +80,17 @@ int main(int argc, char** argv) {
     const p2::Result result =
         p2::run(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration, options);
     print_summary(result, options.csv_path);
+    // After the run: drawing never slows the control loop.
+    if (!result.samples.empty()) {
+      const std::string prefix = opspace::visuals::prefix_of(options.csv_path);
+      const std::vector<opspace::plot::Figure> figures = plots ? p2::figures(result) : std::vector<opspace::plot::Figure>{};
+      if (replay) {
+        const opspace::replay::Scene scene = p2::replay_scene(result);
+        opspace::visuals::publish(figures, &scene, prefix, std::cout);
+      } else {
+        opspace::visuals::publish(figures, nullptr, prefix, std::cout);
+      }
+    }
     return result.failure.empty() ? 0 : 1;
   } catch (const std::exception& e) {
     std::cerr << argv[0] << ": " << e.what() << "\n";

@@ -2,6 +2,7 @@
 
 #include <exception>
 #include <ostream>
+#include <string>
 
 namespace opspace::visuals {
 
@@ -11,6 +12,23 @@ std::string prefix_of(const std::string& csv_path) {
     return csv_path.substr(0, csv_path.size() - ext.size());
   }
   return csv_path;
+}
+
+plot::Figure torque_figure(const Model& model, const std::vector<double>& t,
+                           const std::vector<Eigen::VectorXd>& tau, const std::string& who) {
+  plot::Figure torques{"torques", "Joint torques against their URDF effort limits - " + who};
+  torques.columns = 2;
+  torques.row_height = 260;
+  for (int i = 0; i < model.dof(); ++i) {
+    const Body& b = model.bodies[static_cast<std::size_t>(i)];
+    std::vector<double> tau_i;
+    tau_i.reserve(tau.size());
+    for (const Eigen::VectorXd& v : tau) tau_i.push_back(v(i));
+    plot::Panel& p = torques.panel("joint " + std::to_string(i + 1) + " (" + b.joint_name + ")", "N m");
+    p.add("tau" + std::to_string(i + 1), t, std::move(tau_i)).color = "#1f77b4";
+    p.level("effort limit", b.effort).level("", -b.effort);
+  }
+  return torques;
 }
 
 Published publish(const std::vector<plot::Figure>& figures, const replay::Scene* scene,

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "opspace/urdf.hpp"
+#include "opspace/visuals.hpp"
 
 namespace opspace::scenarios::p1b {
 
@@ -76,18 +77,10 @@ std::vector<plot::Figure> figures(const Result& result, Part part) {
     out.push_back(std::move(q2));
   }
 
-  const Model puma = load_urdf(robot_path(kRobotFile));
-  plot::Figure torques{"torques", "Joint torques against their URDF effort limits - " + who};
-  torques.columns = 2;
-  torques.row_height = 260;
-  for (int i = 0; i < 6; ++i) {
-    const Body& b = puma.bodies[static_cast<std::size_t>(i)];
-    plot::Panel& p = torques.panel("joint " + std::to_string(i + 1) + " (" + b.joint_name + ")", "N m");
-    p.add("tau" + std::to_string(i + 1), t, column(result, [i](const Sample& s) { return s.tau(i); })).color =
-        kMeasured;
-    p.level("effort limit", b.effort).level("", -b.effort);
-  }
-  out.push_back(std::move(torques));
+  std::vector<Eigen::VectorXd> tau;
+  tau.reserve(result.samples.size());
+  for (const Sample& s : result.samples) tau.emplace_back(s.tau);
+  out.push_back(visuals::torque_figure(load_urdf(robot_path(kRobotFile)), t, tau, who));
   return out;
 }
 

@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "opspace/model.hpp"
 #include "opspace/plot.hpp"
 #include "opspace/replay.hpp"
 
@@ -15,6 +18,11 @@ namespace opspace::visuals {
 
 /// "out/hw2-p1-part3.csv" -> "out/hw2-p1-part3": the stem every picture of a run starts with.
 std::string prefix_of(const std::string& csv_path);
+
+/// One panel per joint: the torques tau[k](i) requested at times t[k] against the joint's
+/// URDF effort limit (a figure every problem draws).
+plot::Figure torque_figure(const Model& model, const std::vector<double>& t,
+                           const std::vector<Eigen::VectorXd>& tau, const std::string& who);
 
 /// Files written by publish().
 struct Published {
