@@ -12,6 +12,8 @@
 
 #include <opspace/hw2/p4.hpp>
 #include <opspace/scenarios.hpp>
+#include <opspace/scenarios/p4_visuals.hpp>
+#include <opspace/visuals.hpp>
 #include <opspace/urdf.hpp>
 
 namespace {
@@ -22,12 +24,13 @@ using hw::Target;
 
 int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
-      << "usage: " << program << " [z|y|all] [--duration SECONDS]\n"
+      << "usage: " << program << " [z|y|all] [--duration SECONDS] [--no-plots] [--no-replay]\n"
       << "  z    question v: move the tip 10 cm down along Z0 (elbow lock)\n"
       << "  y    question v: move the tip 10 cm along Y0 (overhead lock)\n"
       << "  all  both (default)\n"
       << "  --duration  simulated seconds per run (default " << p4::kDuration << ")\n"
-      << "Logs: out/hw2-p4-<z|y>.csv (your controller), out/hw2-p4-<z|y>-plain.csv\n";
+      << "Logs: out/hw2-p4-<z|y>.csv (your controller), out/hw2-p4-<z|y>-plain.csv; plots and a 3D\n"
+      << "replay page out/hw2-p4-<z|y>-* next to them (docs/visuals.md)\n";
   return code;
 }
 
@@ -107,6 +110,7 @@ int main(int argc, char** argv) {
   std::vector<Target> targets = {Target::kAlongZ0, Target::kAlongY0};
   opspace::scenarios::RunOptions options;
   options.duration = p4::kDuration;
+  bool plots = true, replay = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") return usage(argv[0], 0);
@@ -116,6 +120,10 @@ int main(int argc, char** argv) {
       targets = {Target::kAlongY0};
     } else if (arg == "all") {
       targets = {Target::kAlongZ0, Target::kAlongY0};
+    } else if (arg == "--no-plots") {
+      plots = false;
+    } else if (arg == "--no-replay") {
+      replay = false;
     } else if (arg == "--duration" && i + 1 < argc) {
       char* end = nullptr;
       options.duration = std::strtod(argv[++i], &end);
@@ -141,6 +149,18 @@ int main(int argc, char** argv) {
       const p4::Result plain = p4::run_plain(target, options);
       side_by_side(target, mine, plain);
       std::cout << "  logs: out/hw2-p4-" << name << ".csv, out/hw2-p4-" << name << "-plain.csv\n";
+      // After the runs: drawing never slows the control loop.
+      if (!mine.samples.empty()) {
+        const std::vector<opspace::plot::Figure> figures =
+            plots ? p4::figures(target, mine, plain) : std::vector<opspace::plot::Figure>{};
+        const std::string prefix = "out/hw2-p4-" + name;
+        if (replay) {
+          const opspace::replay::Scene scene = p4::replay_scene(target, mine, plain);
+          opspace::visuals::publish(figures, &scene, prefix, std::cout);
+        } else {
+          opspace::visuals::publish(figures, nullptr, prefix, std::cout);
+        }
+      }
       ok = ok && mine.failure.empty();
     }
     return ok ? 0 : 1;
