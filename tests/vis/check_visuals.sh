@@ -2,6 +2,8 @@
 # The pictures of a run, checked as a user meets them: run a program, read the paths it
 # prints, open the files. Called by ctest (tests/vis/CMakeLists.txt):
 #   check_visuals.sh plots      PROGRAM WORKDIR             PNG + SVG named as printed, non-empty
+#   check_visuals.sh plots-p2   PROGRAM WORKDIR             the same for hw2-p2
+#   check_visuals.sh plots-p4   PROGRAM WORKDIR             the same for hw2-p4 (both directions)
 #   check_visuals.sh no-gnuplot PROGRAM WORKDIR             without gnuplot: a note, exit 0, data kept
 #   check_visuals.sh compare    PROGRAM WORKDIR             hw2-p1 compare draws the drift overlay
 #   check_visuals.sh replay     PROGRAM WORKDIR NODE CHECK_SCRIPT SCREENSHOT
@@ -48,6 +50,28 @@ case "$mode" in
     cd "$work"
     expected=()
     for f in tip error q2 torques; do expected+=("run/p3-$f.png" "run/p3-$f.svg"); done
+    check_images out.txt "${expected[@]}"
+    ;;
+  plots-p2)
+    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
+    (cd "$work" && "$program" --duration 2 --csv run/p2.csv --no-replay) > "$work/out.txt" 2>&1 ||
+      { cat "$work/out.txt"; fail "$program failed"; }
+    cat "$work/out.txt"
+    cd "$work"
+    expected=()
+    for f in position error lambda torques; do expected+=("run/p2-$f.png" "run/p2-$f.svg"); done
+    check_images out.txt "${expected[@]}"
+    ;;
+  plots-p4)
+    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
+    (cd "$work" && "$program" --duration 1 --no-replay) > "$work/out.txt" 2>&1 ||
+      { cat "$work/out.txt"; fail "$program failed"; }
+    cat "$work/out.txt"
+    cd "$work"
+    expected=()
+    for d in z y; do
+      for f in reach torques torques-plain; do expected+=("out/hw2-p4-$d-$f.png" "out/hw2-p4-$d-$f.svg"); done
+    done
     check_images out.txt "${expected[@]}"
     ;;
   no-gnuplot)
