@@ -137,6 +137,12 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
   // The lesson of problem 1b. With J+ the null-space torque leaves Jv^T (Jbar_v - Jv+)^T g
   // (plus the projected joint task) acting on the tip, tens of newtons at these poses, while
   // PART3 leaves none: the PART2 tip error must be at least ten times PART3's.
+  // PART2 must still be the null-space law: its joint task keeps joint 2 near q_d (amplitude
+  // pi/8 = 0.39 rad) even while the tip drifts, whereas an arm left without control (a
+  // stub, zero torque) falls towards its hanging pose, more than 1 rad from q_d.
+  check.at_most("max q2 tracking error of PART2 after 2 s", r2.summary.q2_error_max, 0.5,
+                "PART2 applies the joint task through its projector: joint 2 should still follow q_d", 1.0,
+                "rad");
   const double ratio = r2.summary.tip_error_rms / std::max(r3.summary.tip_error_rms, 1e-9);
   check.at_least("tip error RMS of PART2 (" + mm(r2.summary.tip_error_rms) + ") over PART3's (" +
                      mm(r3.summary.tip_error_rms) + ")",
