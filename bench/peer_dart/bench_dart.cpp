@@ -190,6 +190,7 @@ BENCHMARK(BM_Coriolis_dart)->Arg(0)->Arg(1);
 /// run is repeated with aggregates) to print opspace / DART at the end.
 class RatioReporter : public benchmark::ConsoleReporter {
  public:
+  RatioReporter() : benchmark::ConsoleReporter(OO_Tabular) {}  // no colour codes in saved logs
   void ReportRuns(const std::vector<Run>& runs) override {
     benchmark::ConsoleReporter::ReportRuns(runs);
     for (const Run& run : runs) {
