@@ -7,7 +7,6 @@ namespace opspace {
 
 namespace {
 
-using spatial::Matrix6d;
 using spatial::Vector6d;
 
 /// CRBA on the poses already in data: Ic_i = I_i + sum of its children's Ic, then
@@ -31,7 +30,8 @@ void crba_at_pose(const Model& model, Data& data) {
 ///   forward:  v_i = v_p + S_i qd_i,  a_i = a_p + S_i qdd_i + v_i xm S_i qd_i,  a_base = [-gravity; 0]
 ///             f_i = I_i a_i + v_i xf I_i v_i
 ///   backward: out_i = S_i^T f_i,  f_p += f_i
-/// A null qdot or qdd stands for zero (so no zero vector needs to be allocated).
+/// A null qdot or qdd stands for zero (so no zero vector needs to be allocated). The inertias
+/// are applied without forming them (spatial::apply_inertia).
 void rnea_at_pose(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>* qdot,
                   const Eigen::Ref<const Eigen::VectorXd>* qdd, const Eigen::Vector3d& gravity,
                   Eigen::VectorXd& out) {
@@ -40,12 +40,24 @@ void rnea_at_pose(const Model& model, Data& data, const Eigen::Ref<const Eigen::
   a_base << -gravity, Eigen::Vector3d::Zero();
   for (int i = 0; i < n; ++i) {
     const int parent = model.bodies[i].parent;
+    const Inertia& inertia = model.bodies[i].inertia;
+    const Eigen::Isometry3d& pose = data.body_pose[i];
+    const Eigen::Vector3d c = pose * inertia.com;
+    if (!qdot && !qdd) {
+      // Gravity only: v = 0 and a_i = a_base, so f_i = I_i a_base = [m a0; c x m a0].
+      data.v[i].setZero();
+      data.a[i] = a_base;
+      data.f[i].head<3>() = inertia.mass * a_base.head<3>();
+      data.f[i].tail<3>() = c.cross(data.f[i].head<3>());
+      continue;
+    }
     const Vector6d vJ = qdot ? Vector6d(data.S[i] * (*qdot)(i)) : Vector6d::Zero();
     data.v[i] = parent < 0 ? vJ : Vector6d(data.v[parent] + vJ);
     data.a[i] = (parent < 0 ? a_base : data.a[parent]) + spatial::cross_motion(data.v[i], vJ);
     if (qdd) data.a[i] += data.S[i] * (*qdd)(i);
-    const Matrix6d I = spatial::body_inertia(model.bodies[i].inertia, data.body_pose[i]);
-    data.f[i] = I * data.a[i] + spatial::cross_force(data.v[i], I * data.v[i]);
+    const Eigen::Matrix3d Ic = pose.linear() * inertia.inertia * pose.linear().transpose();
+    data.f[i] = spatial::apply_inertia(inertia.mass, c, Ic, data.a[i]) +
+                spatial::cross_force(data.v[i], spatial::apply_inertia(inertia.mass, c, Ic, data.v[i]));
   }
   for (int i = n - 1; i >= 0; --i) {
     out(i) = data.S[i].dot(data.f[i]);

@@ -51,6 +51,16 @@ inline Matrix6d inertia_at_origin(double m, const Eigen::Vector3d& c, const Eige
   return I;
 }
 
+/// I m for the spatial inertia inertia_at_origin(m, c, Ic), applied without forming it:
+///   I [v; w] = [m (v - c x w); Ic w + c x m (v - c x w)].
+inline Vector6d apply_inertia(double m, const Eigen::Vector3d& c, const Eigen::Matrix3d& Ic,
+                              const Vector6d& motion) {
+  Vector6d f;
+  f.head<3>() = m * (motion.head<3>() - c.cross(motion.tail<3>()));
+  f.tail<3>() = Ic * motion.tail<3>() + c.cross(f.head<3>());
+  return f;
+}
+
 /// Spatial inertia of body i about O at its current pose oMi: c = oMi com, I = R Ic R^T.
 inline Matrix6d body_inertia(const Inertia& in, const Eigen::Isometry3d& oMi) {
   const Eigen::Matrix3d& R = oMi.linear();

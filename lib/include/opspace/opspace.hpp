@@ -47,8 +47,11 @@ struct TaskSpace {
   JointTaskMatrix Ainv_Jt;     ///< n x m A^-1 J^T
   TaskMatrix Lambda_inv;       ///< m x m J A^-1 J^T
 
-  // Factorisations.
+  // Factorisations. When |Lambda^-1|_F |Lambda|_F < 1 / tol (well away from a singularity,
+  // then every eigenvalue is kept) Lambda comes from task_llt, and eigen and
+  // inverse_eigenvalues are not updated; otherwise from the eigen-decomposition.
   Eigen::LLT<JointMatrix> A_llt;
+  Eigen::LLT<TaskMatrix> task_llt;
   Eigen::SelfAdjointEigenSolver<TaskMatrix> eigen;
   TaskVector inverse_eigenvalues;
 };
