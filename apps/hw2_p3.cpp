@@ -17,12 +17,12 @@ namespace p3 = opspace::scenarios::p3;
 
 int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
-      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots]\n"
+      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay]\n"
       << "  link7's tool pushes 10 N on the plane x = 0.05 and tracks y_d, z_d and the rotation about x\n"
       << "  --duration  simulated seconds (default " << p3::kDefaultDuration << ")\n"
-      << "  --csv       log file (default out/hw2-p3.csv); the plots (PNG, SVG) are written next to it,\n"
-      << "              named after it (docs/visuals.md)\n"
-      << "  --no-plots  skip the plots\n";
+      << "  --csv       log file (default out/hw2-p3.csv); the plots (PNG, SVG) and the replay page\n"
+      << "              (HTML) are written next to it, named after it (docs/visuals.md)\n"
+      << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n";
   return code;
 }
 
@@ -61,13 +61,15 @@ int main(int argc, char** argv) {
   opspace::scenarios::RunOptions options;
   options.duration = p3::kDefaultDuration;
   options.csv_path = "out/hw2-p3.csv";
-  bool plots = true;
+  bool plots = true, replay = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
       return usage(argv[0], 0);
     } else if (arg == "--no-plots") {
       plots = false;
+    } else if (arg == "--no-replay") {
+      replay = false;
     } else if (arg == "--duration" && i + 1 < argc) {
       char* end = nullptr;
       options.duration = std::strtod(argv[++i], &end);
@@ -89,9 +91,16 @@ int main(int argc, char** argv) {
     const p3::Result result = p3::run(&opspace::hw2::p3::control, options);
     print_summary(result, options.csv_path);
     // After the run: drawing never slows the control loop.
-    if (plots && !result.samples.empty()) {
-      opspace::visuals::publish(p3::figures(result), nullptr, opspace::visuals::prefix_of(options.csv_path),
-                                std::cout);
+    if (!result.samples.empty()) {
+      const std::vector<opspace::plot::Figure> figures =
+          plots ? p3::figures(result) : std::vector<opspace::plot::Figure>{};
+      const std::string prefix = opspace::visuals::prefix_of(options.csv_path);
+      if (replay) {
+        const opspace::replay::Scene scene = p3::replay_scene(result);
+        opspace::visuals::publish(figures, &scene, prefix, std::cout);
+      } else {
+        opspace::visuals::publish(figures, nullptr, prefix, std::cout);
+      }
     }
     return result.failure.empty() ? 0 : 1;
   } catch (const std::exception& e) {

@@ -2,6 +2,9 @@
 
 #include <string>
 
+#include "opspace/euler_params.hpp"
+#include "opspace/urdf.hpp"
+
 namespace opspace::scenarios::p3 {
 
 namespace {
@@ -71,6 +74,38 @@ std::vector<plot::Figure> figures(const Result& result) {
       .color = kMeasured;
   out.push_back(std::move(tilt));
   return out;
+}
+
+replay::Scene replay_scene(const Result& result) {
+  replay::Scene scene;
+  scene.title = "Problem 3, unified motion and force control";
+  scene.subtitle = "KUKA iiwa: the tool pushes 10 N on the plane x = 0.05 while link7 tracks y_d, z_d and the "
+                   "rotation about x";
+  scene.model = load_urdf(robot_path(kRobotFile));
+  scene.t = column(result, [](const Sample& s) { return s.t; });
+  replay::Track face, push, origin, desired;
+  for (const Sample& s : result.samples) {
+    scene.q.emplace_back(s.q);
+    // the centre of the tool face: 0.05 m ahead of link7's origin along its z axis
+    face.push_back(s.x_p + 0.05 * rotation_matrix(s.lambda).col(2));
+    push.push_back(s.tool_force);
+    origin.push_back(s.x_p);
+    desired.push_back(s.x_d.head<3>());  // x_d = 0: where the face meets the plane
+  }
+  // Look along the plane from beside the tool (+y), so that the push, along +x, is seen
+  // side-on rather than through the plane.
+  scene.view = Eigen::Vector3d(0.25, 1.0, 0.35);
+  scene.markers.push_back(replay::Marker::plane("plane x = 0.05", "#95a5a6", Eigen::Vector3d(kPlaneX, 0.5, 0.65),
+                                                -Eigen::Vector3d::UnitX(), 0.5));
+  scene.markers.push_back(replay::Marker::arrow("push on the plane (1 cm per N)", "#e74c3c", face, push, 0.01));
+  scene.markers.push_back(replay::Marker::point_at("desired x_d = (0, y_d, z_d)", "#ff7f0e", desired, 0.01));
+  scene.markers.push_back(replay::Marker::trail("link7 origin", "#1f77b4", origin));
+  scene.readouts.push_back({"F_x (N)", column(result, [](const Sample& s) { return s.tool_force.x(); })});
+  scene.readouts.push_back({"tilt (deg)", column(result, [](const Sample& s) { return kDegPerRad * s.tilt; })});
+  scene.readouts.push_back({"y, z error (mm)", column(result, [](const Sample& s) {
+                              return 1e3 * (s.x_p.tail<2>() - s.x_d.segment<2>(1)).norm();
+                            })});
+  return scene;
 }
 
 }  // namespace opspace::scenarios::p3
