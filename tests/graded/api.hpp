@@ -6,6 +6,7 @@
 #include <opspace/hw2/p1a.hpp>
 #include <opspace/hw2/p1b.hpp>
 #include <opspace/hw2/p2.hpp>
+#include <opspace/hw2/p3.hpp>
 #include <opspace/hw2/p4.hpp>
 
 namespace opspace::grading {
@@ -35,6 +36,13 @@ struct P2Api {
   decltype(&hw2::p2::control) control;
 };
 
+/// Problem 3 (lib/include/opspace/hw2/p3.hpp).
+struct P3Api {
+  decltype(&hw2::p3::motion_selection) motion_selection;
+  decltype(&hw2::p3::force_selection) force_selection;
+  decltype(&hw2::p3::control) control;
+};
+
 /// Problem 4 (lib/include/opspace/hw2/p4.hpp).
 struct P4Api {
   decltype(&hw2::p4::degrees_of_freedom) degrees_of_freedom;
@@ -50,6 +58,7 @@ struct Hw2Api {
   P1aApi p1a;
   P1bApi p1b;
   P2Api p2;
+  P3Api p3;
   P4Api p4;
 };
 
@@ -63,6 +72,7 @@ inline Hw2Api linked_api() {
              &p1a::nullspace_projector, &p1a::inverse_kinematics_step, &p1a::split_displacement};
   api.p1b = {&hw2::p1b::control};
   api.p2 = {&hw2::p2::desired_acceleration, &hw2::p2::desired_twist_acceleration, &hw2::p2::control};
+  api.p3 = {&hw2::p3::motion_selection, &hw2::p3::force_selection, &hw2::p3::control};
   api.p4 = {&hw2::p4::degrees_of_freedom, &hw2::p4::singular_directions, &hw2::p4::moving_directions,
             &hw2::p4::rotation_axes,      &hw2::p4::singularity_type,    &hw2::p4::control};
   return api;

@@ -24,6 +24,10 @@ Problem problem_1b();
 
 /// Problem 2: iiwa position and Euler-parameter tracking, in simulation (p2.cpp).
 Problem problem_2();
+
+/// Problem 3: iiwa unified motion and force control against a plane, in simulation (p3.cpp).
+Problem problem_3();
+
 /// Problem 4: singularities of the 3R elbow arm, analysed and controlled in simulation (p4.cpp).
 Problem problem_4();
 

@@ -1,6 +1,6 @@
 // A whole control tick allocates nothing on the heap: the library computes the controller's
 // State (kinematics, A, g, Lambda, Jbar, p) and the reference law turns it into torques,
-// with fixed-size matrices and workspaces sized once, for problems 1b, 2 and 4. (Linked with
+// with fixed-size matrices and workspaces sized once, for problems 1b, 2, 3 and 4. (Linked with
 // solutions/.)
 #include <doctest/doctest.h>
 
@@ -43,6 +43,22 @@ TEST_CASE("a problem-2 control tick allocates nothing once its workspaces exist"
     opspace::hw2::p2::Goal goal = p2::goal(0.5);
     goal.xddot_d = opspace::hw2::p2::desired_acceleration(0.5);
     sink += opspace::hw2::p2::control(s, goal);
+  });
+  CHECK_MESSAGE(n == 0, "one tick allocated ", n, " times");
+  CHECK(sink.allFinite());
+}
+
+TEST_CASE("a problem-3 control tick allocates nothing once its workspaces exist") {
+  namespace p3 = opspace::scenarios::p3;
+  const opspace::Model iiwa = opspace::load_urdf(opspace::robot_path(p3::kRobotFile));
+  p3::Observer observer(iiwa);
+  const p3::Vector7d q = p3::initial_q();
+  const p3::Vector7d dq = p3::Vector7d::LinSpaced(0.3, -0.2);
+  p3::Vector7d sink = p3::Vector7d::Zero();
+  const long n = allocations_in([&] {
+    const opspace::hw2::p3::Goal goal = p3::goal(0.5);
+    const opspace::hw2::p3::State& s = observer.observe(0.5, q, dq, goal.x_d.tail<4>());
+    sink += opspace::hw2::p3::control(s, goal);
   });
   CHECK_MESSAGE(n == 0, "one tick allocated ", n, " times");
   CHECK(sink.allFinite());

@@ -24,6 +24,10 @@ std::vector<Mutant> p1b_mutants();
 
 /// Mistakes in problem 2.
 std::vector<Mutant> p2_mutants();
+
+/// Mistakes in problem 3.
+std::vector<Mutant> p3_mutants();
+
 /// Mistakes in problem 4.
 std::vector<Mutant> p4_mutants();
 

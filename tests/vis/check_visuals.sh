@@ -3,6 +3,7 @@
 # prints, open the files. Called by ctest (tests/vis/CMakeLists.txt):
 #   check_visuals.sh plots      PROGRAM WORKDIR             PNG + SVG named as printed, non-empty
 #   check_visuals.sh plots-p2   PROGRAM WORKDIR             the same for hw2-p2
+#   check_visuals.sh plots-p3   PROGRAM WORKDIR             the same for hw2-p3's figures
 #   check_visuals.sh plots-p4   PROGRAM WORKDIR             the same for hw2-p4 (both directions)
 #   check_visuals.sh no-gnuplot PROGRAM WORKDIR             without gnuplot: a note, exit 0, data kept
 #   check_visuals.sh compare    PROGRAM WORKDIR             hw2-p1 compare draws the drift overlay
@@ -60,6 +61,17 @@ case "$mode" in
     cd "$work"
     expected=()
     for f in position error lambda torques; do expected+=("run/p2-$f.png" "run/p2-$f.svg"); done
+    check_images out.txt "${expected[@]}"
+    ;;
+  plots-p3)
+    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
+    # 2 simulated seconds: the contact has settled, every figure has data.
+    (cd "$work" && "$program" --duration 2 --csv run/p3.csv --no-replay) > "$work/out.txt" 2>&1 ||
+      { cat "$work/out.txt"; fail "$program failed"; }
+    cat "$work/out.txt"
+    cd "$work"
+    expected=()
+    for f in force tracking tilt; do expected+=("run/p3-$f.png" "run/p3-$f.svg"); done
     check_images out.txt "${expected[@]}"
     ;;
   plots-p4)

@@ -6,4 +6,5 @@
 #include "opspace/scenarios/common.hpp"
 #include "opspace/scenarios/p1b.hpp"
 #include "opspace/scenarios/p2.hpp"
+#include "opspace/scenarios/p3.hpp"
 #include "opspace/scenarios/p4.hpp"

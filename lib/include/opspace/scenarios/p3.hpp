@@ -1,0 +1,105 @@
+/// @file scenarios/p3.hpp
+/// Problem 3: the KUKA iiwa pushes 10 N along +x against a rigid plane at x = 0.05 (zero
+/// moment about y and z) while it tracks problem 2's y, z and rotation about x (numbers from
+/// shared robots.md and the problem set), and its closed-loop run on the simulation.
+///
+/// The tool is the flat disc of robots/iiwa7.urdf on link7 (radius 0.04 m, face 0.05 m ahead of
+/// link7's origin along its z axis, which points along +x at the start), so the face meets the
+/// plane where problem 2's trajectory runs (x = 0). The contact is frictionless and plastic
+/// (friction 0, restitution 0), as in the course's simulation.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "opspace/hw2/p3.hpp"
+#include "opspace/scenarios/p2.hpp"
+
+namespace opspace::scenarios {
+
+namespace p3 {
+
+using hw2::p3::Vector6d;
+using hw2::p3::Vector7d;
+
+inline constexpr const char* kRobotFile = "iiwa7.urdf";
+inline constexpr const char* kTipLink = "link7";  ///< operational point and tool: this link
+inline constexpr double kPlaneX = 0.05;           ///< the plane's position along x (m)
+inline constexpr double kPushForce = 10.0;        ///< desired F_x (N)
+inline constexpr double kSettleTime = 1.0;        ///< errors are measured after this (s)
+inline constexpr double kPeriod = 5.0;            ///< period of the desired trajectory (s)
+inline constexpr double kDefaultDuration = 10.0;  ///< two periods of the trajectory (s)
+
+/// Problem 2's initial q: the tool face starts on the plane (within a millimetre), at rest.
+Vector7d initial_q();
+
+/// x_d, xdot_d, xddot_d of problem 2's trajectory (the library's analytic derivatives),
+/// F_d = [10, 0, 0, 0, 0, 0], kpx = 50, kvx = 20, kvj = 20.
+hw2::p3::Goal goal(double t);
+
+/// The controller's State: problem 2's Observer (link7's origin, lambda on the side of
+/// lambda_d, A, g, Lambda0, Jbar0, N0, p). Allocates nothing per call.
+using Observer = p2::Observer;
+
+/// The student's law under test: exercises/ or solutions/, or a mutant.
+using Controller = Vector7d (*)(const hw2::p3::State&, const hw2::p3::Goal&);
+
+/// One simulated instant. The contact values are those of the step that led to it.
+struct Sample {
+  double t = 0.0;
+  Eigen::Vector3d x_p = Eigen::Vector3d::Zero();     ///< position of link7's origin
+  Eigen::Vector4d lambda = Eigen::Vector4d::Zero();  ///< its Euler parameters (as observed)
+  Vector7d x_d = Vector7d::Zero();                   ///< desired [position; lambda_d]
+  /// Force the tool applies to the plane, base frame (N): +x is pushing.
+  Eigen::Vector3d tool_force = Eigen::Vector3d::Zero();
+  /// Moment the tool applies to the plane about link7's origin, base frame (N m).
+  Eigen::Vector3d tool_moment = Eigen::Vector3d::Zero();
+  int contact_points = 0;  ///< contact points between link7 and the plane
+  double tilt = 0.0;       ///< angle between link7's z axis and +x (rad): 0 when flat on the plane
+  double rotation_x_error = 0.0;  ///< rotation about x of the orientation error, delta_phi_x (rad)
+  Vector7d q = Vector7d::Zero();
+  Vector7d tau = Vector7d::Zero();
+};
+
+/// What a run measured; errors are taken after kSettleTime.
+struct Summary {
+  double first_contact_time = -1.0;  ///< first sample with the tool pushing (s); -1: never
+  /// samples after kSettleTime at which the tool did not push on the plane (the course's start
+  /// has the face 0.5 mm inside the plane: the solver's push-out lifts the tool off for a few
+  /// tens of milliseconds before the 10 N bring it back)
+  long contact_lost_samples = 0;
+  double force_error_mean = 0.0;     ///< mean |F_x - 10| after kSettleTime (N)
+  double force_error_max = 0.0;      ///< max |F_x - 10| after kSettleTime (N): one step's value
+  /// max |F_x - 10| after kSettleTime of the force averaged over the last 10 steps (N): the
+  /// contact solver shares the push among the disc's 3-4 contact points unevenly from one
+  /// step to the next, so single steps alternate by a few newtons about the mean
+  double force_error_max_10ms = 0.0;
+  double force_mean = 0.0;           ///< mean F_x after kSettleTime (N)
+  double moment_yz_max = 0.0;        ///< max |(M_y, M_z)| about link7's origin after kSettleTime (N m)
+  double yz_error_rms = 0.0;         ///< RMS |(y - y_d, z - z_d)| after kSettleTime (m)
+  double yz_error_max = 0.0;         ///< max of the same (m)
+  double rotation_x_error_rms = 0.0;  ///< RMS |delta_phi_x| after kSettleTime (rad)
+  double rotation_x_error_max = 0.0;  ///< max of the same (rad)
+  double tilt_max = 0.0;             ///< max tilt of the tool against the plane after kSettleTime (rad)
+  double tilt_rms = 0.0;             ///< RMS of the same (rad)
+  double x_min = 0.0, x_max = 0.0;   ///< range of link7's origin along x after kSettleTime (m)
+  double peak_torque = 0.0;          ///< max |tau_i| requested over the run (N m)
+  int peak_torque_joint = 0;
+  long clamped_steps = 0;            ///< joint-steps whose torque was clamped to an effort limit
+  double time_reached = 0.0;         ///< simulated time at the end (s)
+};
+
+struct Result {
+  std::vector<Sample> samples;  ///< one per 1 ms step
+  Summary summary;
+  std::string failure;          ///< empty, or what stopped the run early (NaN torque, ...)
+};
+
+/// Runs problem 3's scenario: the plane at x = 0.05, then every 1 ms step
+/// tau = control(state, goal(t)).
+Result run(Controller control, const RunOptions& options);
+
+}  // namespace p3
+
+}  // namespace opspace::scenarios

@@ -1,0 +1,29 @@
+// Problem 3, reference solution: the equations of the problem set.
+#include <opspace/euler_params.hpp>
+#include <opspace/hw2/p3.hpp>
+
+namespace opspace::hw2::p3 {
+
+Matrix6d motion_selection() {
+  Vector6d diagonal;
+  diagonal << 0, 1, 1, 1, 0, 0;  // y, z, rotation about x
+  return diagonal.asDiagonal();
+}
+
+Matrix6d force_selection() {
+  Vector6d diagonal;
+  diagonal << 1, 0, 0, 0, 1, 1;  // force along x, moments about y and z
+  return diagonal.asDiagonal();
+}
+
+Vector7d control(const State& s, const Goal& goal) {
+  const Matrix67d E_pinv = representation_matrix_pinv(s.lambda);  // at the CURRENT lambda
+  Vector6d error, twist;
+  error << s.x_p - goal.x_d.head<3>(), orientation_error(s.lambda, goal.x_d.tail<4>());
+  twist << s.v, s.w;
+  const Vector6d motion = -goal.kpx * error - goal.kvx * (twist - E_pinv * goal.xdot_d) + E_pinv * goal.xddot_d;
+  const Vector6d F = s.Lambda0 * motion_selection() * motion + s.p + force_selection() * goal.F_d;
+  return s.J0.transpose() * F + s.N0.transpose() * (s.A * (-goal.kvj * s.dq) + s.g);
+}
+
+}  // namespace opspace::hw2::p3

@@ -1,0 +1,95 @@
+// Known-wrong implementations of problem 3. Each changes the reference in one place.
+#include <opspace/euler_params.hpp>
+#include <opspace/hw2/p3.hpp>
+
+#include "mutants.hpp"
+
+namespace opspace::mutants {
+
+namespace {
+
+using hw2::p3::Goal;
+using hw2::p3::Matrix6d;
+using hw2::p3::State;
+using hw2::p3::Vector6d;
+using hw2::p3::Vector7d;
+
+// What each mutant gets wrong in the law.
+struct Mistakes {
+  bool swapped = false;           // Omega and Omega-bar exchanged
+  bool no_omega_bar = false;      // + F_d instead of + Omega-bar F_d
+  bool force_times_lambda = false;  // + Lambda0 Omega-bar F_d
+};
+
+Vector7d law(const State& s, const Goal& goal, const Mistakes& m) {
+  const Matrix67d E_pinv = representation_matrix_pinv(s.lambda);
+  Vector6d error, twist;
+  error << s.x_p - goal.x_d.head<3>(), orientation_error(s.lambda, goal.x_d.tail<4>());
+  twist << s.v, s.w;
+  const Vector6d motion = -goal.kpx * error - goal.kvx * (twist - E_pinv * goal.xdot_d) + E_pinv * goal.xddot_d;
+  const Matrix6d omega = m.swapped ? hw2::p3::force_selection() : hw2::p3::motion_selection();
+  const Matrix6d omega_bar = m.swapped ? hw2::p3::motion_selection() : hw2::p3::force_selection();
+  Vector6d force = m.no_omega_bar ? goal.F_d : Vector6d(omega_bar * goal.F_d);
+  if (m.force_times_lambda) force = s.Lambda0 * force;
+  const Vector6d F = s.Lambda0 * omega * motion + s.p + force;
+  return s.J0.transpose() * F + s.N0.transpose() * (s.A * (-goal.kvj * s.dq) + s.g);
+}
+
+Vector7d swapped(const State& s, const Goal& goal) {
+  Mistakes m;
+  m.swapped = true;
+  return law(s, goal, m);
+}
+
+Vector7d without_omega_bar(const State& s, const Goal& goal) {
+  Mistakes m;
+  m.no_omega_bar = true;
+  return law(s, goal, m);
+}
+
+Vector7d force_times_lambda(const State& s, const Goal& goal) {
+  Mistakes m;
+  m.force_times_lambda = true;
+  return law(s, goal, m);
+}
+
+}  // namespace
+
+std::vector<Mutant> p3_mutants() {
+  const std::string selection = "a. Omega selects F_y, F_z, M_x (motion) and Omega-bar selects F_x, M_y, M_z (force)";
+  const std::string law =
+      "b. the controller applies J0^T (Lambda0 Omega (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ "
+      "xdot_d) + [vdot_d; wdot_d]) + p + Omega-bar F_d) + N0^T (A (-kvj dq) + g)";
+  const std::string force = "c. in simulation the tool pushes on the plane with 10 N (mean error after 1 s)";
+  const std::string yz = "c. in simulation link7's origin follows y_d and z_d";
+  const std::string rx = "c. in simulation link7 follows the rotation about x of lambda_d";
+  const std::string kept = "c. in simulation the tool never leaves the plane after the first second";
+  return {
+      // x becomes motion-controlled to x_d = 0, where the face only grazes the plane: the push
+      // averages 0.002 N and the tool is off the plane for 1.8 s of the last 9. y, z and the
+      // rotation about x get only the feed-forward "force" 0 and drift by 0.25 m and 1.5 rad
+      // RMS. The tool stays flat all the same (0.12 deg): the rotations about y and z are now
+      // motion-controlled to lambda_d, which keeps link7's z axis along +x.
+      {"Omega and Omega-bar swapped (motion control along x and about y, z; force in the rest)",
+       [](grading::Hw2Api& api) {
+         api.p3.motion_selection = &hw2::p3::force_selection;
+         api.p3.force_selection = &hw2::p3::motion_selection;
+         api.p3.control = &swapped;
+       },
+       {selection, law, force, yz, rx, kept}},
+      // The scenario's F_d = [10, 0, 0, 0, 0, 0] lies in the force directions already, so
+      // without Omega-bar the torque is the same in simulation: only the law test, whose F_d
+      // has components in the motion directions too, sees it.
+      {"the desired force F_d added without Omega-bar",
+       [](grading::Hw2Api& api) { api.p3.control = &without_omega_bar; },
+       {law}},
+      // Lambda0 F_d = 10 Lambda0(:, 0): at the start Lambda0(0, 0) = 3.4 kg, so the tool pushes
+      // 33 N on average instead of 10 N; Lambda0(1, 0) = 1.1 kg adds an 11 N push along y that
+      // the motion loop must fight, 33 mm RMS of y, z error.
+      {"the desired force multiplied by Lambda0 (treated as an acceleration)",
+       [](grading::Hw2Api& api) { api.p3.control = &force_times_lambda; },
+       {law, force, yz}},
+  };
+}
+
+}  // namespace opspace::mutants
