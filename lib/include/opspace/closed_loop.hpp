@@ -33,8 +33,11 @@ void check_torque(const Eigen::Ref<const Eigen::VectorXd>& tau, Eigen::Index dof
 /// line rewritten in place when `out` is a terminal.
 class Progress {
  public:
+  /// Reports on `out` for a run of `duration` simulated seconds, every `every` seconds.
   Progress(std::ostream& out, std::string label, double duration, double every = 1.0);
+  /// Prints "label: t = ... / duration s" when t has passed the next reporting time.
   void update(double t);
+  /// Ends the line rewritten in place (on a terminal).
   void finish();
 
  private:

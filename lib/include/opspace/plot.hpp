@@ -42,9 +42,10 @@ struct Panel {
   Panel& level(std::string title, double y);
 };
 
-/// One picture: a grid of panels sharing the x label, saved as <prefix>-<name>.png/.svg.
+/// One picture: a grid of panels sharing the x label, saved as PREFIX-NAME.png/.svg.
 struct Figure {
   Figure() = default;
+  /// A figure written as PREFIX-NAME.png/.svg, titled `title_`.
   Figure(std::string name_, std::string title_) : name(std::move(name_)), title(std::move(title_)) {}
 
   std::string name;   ///< file-name part: lower case, digits, '-'
@@ -55,6 +56,7 @@ struct Figure {
   int width = 1100;         ///< pixels
   int row_height = 330;     ///< pixels per row of panels
 
+  /// Appends an empty panel titled `title` with y axis label `ylabel`, and returns it.
   Panel& panel(std::string title, std::string ylabel);
 };
 
@@ -77,8 +79,8 @@ struct Options {
 /// on PATH; "" when there is none.
 std::string find_gnuplot();
 
-/// Writes <prefix>-<name>.dat and .gp for every figure and runs gnuplot on each to draw
-/// <prefix>-<name>.png (and .svg). Throws std::runtime_error only if the files cannot be
+/// Writes PREFIX-NAME.dat and .gp for every figure and runs gnuplot on each to draw
+/// PREFIX-NAME.png (and .svg). Throws std::runtime_error only if the files cannot be
 /// written; a missing or failing gnuplot is reported in Output::skipped.
 Output render(const std::vector<Figure>& figures, const std::string& prefix, const Options& options = {});
 

@@ -68,7 +68,7 @@ struct Output {
 };
 
 /// The bundled viewer script: $OPSPACE_REPLAY_BUNDLE if set, else the one built by CMake
-/// (build/<preset>/web/opspace-replay.js).
+/// (build/PRESET/web/opspace-replay.js).
 std::string bundle_path();
 
 /// The frames kept at `fps` out of logged times t (indices into t; always the first and last).

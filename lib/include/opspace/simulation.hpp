@@ -34,6 +34,7 @@ namespace opspace {
 /// A run that went wrong: a non-finite state or a joint speed beyond the bound.
 class SimulationError : public std::runtime_error {
  public:
+  /// `message` for what(); the offending `joint` (or empty) and the simulated `time` (s).
   SimulationError(const std::string& message, std::string joint, double time)
       : std::runtime_error(message), joint_(std::move(joint)), time_(time) {}
   /// Name of the offending joint (empty if the fault is not tied to one joint).
@@ -152,14 +153,14 @@ class Simulation {
   /// articulated-body routines (for cross-checks; allocates nothing after the first call).
   void inverse_mass_matrix(Eigen::Ref<Eigen::MatrixXd> Minv);
 
-  const SimulationSummary& summary() const;
-  const SimulationSettings& settings() const;
-  const Model& model() const;
+  const SimulationSummary& summary() const;    ///< steps, time, clamped torques so far
+  const SimulationSettings& settings() const;  ///< as given to the constructor
+  const Model& model() const;                  ///< the Model the world was built from
 
   /// The Bullet objects, for what this class does not wrap. Changing them voids the promises
   /// above.
   btMultiBody& multibody();
-  btMultiBodyDynamicsWorld& world();
+  btMultiBodyDynamicsWorld& world();  ///< the Bullet world (see multibody())
 
  private:
   struct Impl;

@@ -31,8 +31,8 @@ struct Published {
   std::vector<std::string> skipped; ///< why something was not made (no gnuplot, no bundle)
 };
 
-/// Draws `figures` as <prefix>-<figure>.png/.svg and, when `scene` is given, writes
-/// <prefix>-replay.html; prints "plot:   PATH", "replay: PATH" and any "note: ..." lines to
+/// Draws `figures` as PREFIX-FIGURE.png/.svg and, when `scene` is given, writes
+/// PREFIX-replay.html; prints "plot:   PATH", "replay: PATH" and any "note: ..." lines to
 /// `out`. A missing gnuplot or viewer bundle, or a picture that cannot be written, is a
 /// note, never an error: this function does not throw.
 Published publish(const std::vector<plot::Figure>& figures, const replay::Scene* scene,

@@ -36,6 +36,7 @@ Vector7d initial_q();
 struct Reference {
   Vector7d x, xdot, xddot;
 };
+/// x_d(t), its first and second time derivatives, in closed form.
 Reference desired(double t);
 
 /// x_d and xdot_d of desired(t), xddot_d = 0 (run() fills it from the student's 2(a)),
@@ -47,6 +48,7 @@ hw2::p2::Goal goal(double t);
 /// nothing per call.
 class Observer {
  public:
+  /// Workspaces sized for `iiwa` (which must outlive the Observer and have 7 joints).
   explicit Observer(const Model& iiwa);
   /// The measured lambda is returned on the side of `lambda_side` (normally lambda_d(t)).
   const hw2::p2::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,

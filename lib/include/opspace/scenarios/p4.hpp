@@ -53,7 +53,9 @@ hw2::p4::Goal goal(Target target);
 /// allocates nothing per call (tests/lib/test_tick_noalloc.cpp).
 class Observer {
  public:
+  /// Workspaces sized for `rrr` (which must outlive the Observer).
   explicit Observer(const Model& rrr);
+  /// The State at time t at (q, dq), with the robust task quantities (kRobustTolerance).
   const hw2::p4::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                                 const Eigen::Ref<const Eigen::VectorXd>& dq);
   /// Lambda, Jbar, N, p of the last observe() with the default (tiny) tolerance.
