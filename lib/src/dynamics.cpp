@@ -81,6 +81,12 @@ const Eigen::VectorXd& generalized_gravity(const Model& model, Data& data,
   return data.g;
 }
 
+void mass_matrix_and_gravity(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q) {
+  forward_kinematics(model, data, q);
+  crba_at_pose(model, data);
+  rnea_at_pose(model, data, nullptr, nullptr, model.gravity, data.g);
+}
+
 const Eigen::VectorXd& coriolis_centrifugal(const Model& model, Data& data,
                                             const Eigen::Ref<const Eigen::VectorXd>& q,
                                             const Eigen::Ref<const Eigen::VectorXd>& qdot) {

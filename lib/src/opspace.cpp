@@ -1,5 +1,6 @@
 #include "opspace/opspace.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -9,7 +10,9 @@ namespace opspace {
 
 namespace {
 
-Eigen::Index checked(Eigen::Index value, Eigen::Index max, const char* what) {
+using Eigen::Index;
+
+Index checked(Index value, Index max, const char* what) {
   if (value < 1 || value > max) {
     throw std::invalid_argument(std::string("TaskSpace: ") + what + " is " + std::to_string(value) +
                                 ", expected 1 to " + std::to_string(max));
@@ -17,51 +20,134 @@ Eigen::Index checked(Eigen::Index value, Eigen::Index max, const char* what) {
   return value;
 }
 
-/// X <- (L L^T)^-1 X for the Cholesky factor L held in the lower triangle of LL, column by
-/// column with plain loops: at these sizes (n <= 12) Eigen's triangular-solve kernels cost
-/// several times more in dispatch than in arithmetic (callgrind, docs/performance.md).
-template <typename Factor, typename Rhs>
-void cholesky_solve_in_place(const Factor& LL, Rhs& X) {
-  const Eigen::Index n = LL.rows();
-  for (Eigen::Index c = 0; c < X.cols(); ++c) {
-    for (Eigen::Index i = 0; i < n; ++i) {  // L y = x
-      double s = X(i, c);
-      for (Eigen::Index j = 0; j < i; ++j) s -= LL(i, j) * X(j, c);
-      X(i, c) = s / LL(i, i);
-    }
-    for (Eigen::Index i = n - 1; i >= 0; --i) {  // L^T x = y
-      double s = X(i, c);
-      for (Eigen::Index j = i + 1; j < n; ++j) s -= LL(j, i) * X(j, c);
-      X(i, c) = s / LL(i, i);
+// The kernels below are plain loops over matrices whose sizes are template parameters: for the
+// task shapes of the course (6 x 7, 3 x 6, 3 x 3) the compiler unrolls and vectorises them,
+// where Eigen's general-purpose factorisations and products, built for large matrices, spent
+// most of their time in size dispatch (callgrind, docs/performance.md).
+
+/// A = L L^T: L overwrites the lower triangle of `L` (which holds A on entry; the strict upper
+/// triangle is not read). False if A is not positive definite (or holds a NaN).
+template <typename Mat>
+bool cholesky_in_place(Mat& L) {
+  const Index n = L.rows();
+  for (Index j = 0; j < n; ++j) {
+    double d = L(j, j);
+    for (Index k = 0; k < j; ++k) d -= L(j, k) * L(j, k);
+    if (!(d > 0.0)) return false;
+    const double ljj = std::sqrt(d);
+    L(j, j) = ljj;
+    for (Index i = j + 1; i < n; ++i) {
+      double s = L(i, j);
+      for (Index k = 0; k < j; ++k) s -= L(i, k) * L(j, k);
+      L(i, j) = s / ljj;
     }
   }
-}
-
-/// C <- C + sign * A B with plain loops (small matrices, as above).
-template <typename MA, typename MB, typename MC>
-void add_product(const MA& A, const MB& B, MC& C, double sign) {
-  for (Eigen::Index c = 0; c < C.cols(); ++c) {
-    for (Eigen::Index k = 0; k < A.cols(); ++k) {
-      const double b = sign * B(k, c);
-      for (Eigen::Index r = 0; r < C.rows(); ++r) C(r, c) += A(r, k) * b;
-    }
-  }
-}
-
-/// Fast path of the robust inverse: Lambda = (Lambda^-1)^-1 by Cholesky, kept only when no
-/// eigenvalue of Lambda^-1 can fall below tol * mu_max. Since mu_max <= |Lambda^-1|_F and
-/// 1 / mu_min = |Lambda|_2 <= |Lambda|_F, |Lambda^-1|_F |Lambda|_F < 1 / tol guarantees
-/// mu_min > tol * mu_max: the eigen-decomposition would keep every eigenvalue and give the
-/// same Lambda, at several times the cost. Returns false (Lambda unspecified) otherwise.
-/// out.eigen and out.inverse_eigenvalues are then left untouched.
-bool invert_well_conditioned(TaskSpace& out, double tol) {
-  out.task_llt.compute(out.Lambda_inv);
-  if (out.task_llt.info() != Eigen::Success) return false;
-  out.Lambda.setIdentity();
-  cholesky_solve_in_place(out.task_llt.matrixLLT(), out.Lambda);
-  if (!(out.Lambda_inv.norm() * out.Lambda.norm() * tol < 1.0)) return false;  // also catches NaN
-  out.rank = out.Lambda.rows();
   return true;
+}
+
+/// Linv = L^-1 for the lower-triangular L, column by column (the strict upper triangle of
+/// Linv is not written: it must hold zeros).
+template <typename Factor, typename Inverse>
+void lower_inverse(const Factor& L, Inverse& Linv) {
+  const Index n = L.rows();
+  for (Index j = 0; j < n; ++j) {
+    Linv(j, j) = 1.0 / L(j, j);
+    for (Index i = j + 1; i < n; ++i) {
+      double s = 0.0;
+      for (Index k = j; k < i; ++k) s += L(i, k) * Linv(k, j);
+      Linv(i, j) = -s / L(i, i);
+    }
+  }
+}
+
+/// Column-major view of size Rows x Cols (compile-time where known) on a Ref's data.
+template <int Rows, int Cols, typename Ref>
+auto view(const Ref& X) {
+  using Mat = Eigen::Matrix<double, Rows, Cols>;
+  return Eigen::Map<const Mat, 0, Eigen::OuterStride<>>(X.data(), X.rows(), X.cols(),
+                                                         Eigen::OuterStride<>(X.outerStride()));
+}
+
+/// The same for a TaskSpace member, whose storage is contiguous (leading dimension = rows).
+template <int Rows, int Cols, typename Member>
+auto view_mut(Member& X) {
+  return Eigen::Map<Eigen::Matrix<double, Rows, Cols>>(X.data(), X.rows(), X.cols());
+}
+
+/// Lambda = (Lambda^-1)^-1 on the robust eigen path: Lambda^-1 = Q diag(mu) Q^T,
+/// Lambda = Q diag(1/mu_i for mu_i > tol mu_max, else 0) Q^T.
+void invert_robustly(TaskSpace& out, double tol) {
+  const Index m = out.Lambda.rows();
+  out.eigen.compute(out.Lambda_inv);
+  const auto& mu = out.eigen.eigenvalues();  // ascending
+  const double cutoff = tol * mu(m - 1);
+  out.rank = 0;
+  for (Index i = 0; i < m; ++i) {
+    const bool kept = mu(i) > cutoff && mu(i) > 0.0;
+    out.inverse_eigenvalues(i) = kept ? 1.0 / mu(i) : 0.0;
+    out.rank += kept ? 1 : 0;
+  }
+  const auto& Q = out.eigen.eigenvectors();
+  out.Lambda.noalias() = Q * out.inverse_eigenvalues.asDiagonal() * Q.transpose();
+}
+
+/// operational_space() for an M-dimensional task on an N-DOF robot (either may be
+/// Eigen::Dynamic). Sizes are checked by the caller.
+template <int M, int N>
+void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
+                             const Eigen::Ref<const Eigen::MatrixXd>& J_in,
+                             const Eigen::Ref<const Eigen::VectorXd>& g_in, TaskSpace& out, double tol) {
+  constexpr int kMaxN = N == Eigen::Dynamic ? kMaxDof : N;
+  constexpr int kMaxM = M == Eigen::Dynamic ? kMaxTaskDim : M;
+  const Index m = out.Lambda.rows(), n = out.N.rows();
+  const auto A = view<N, N>(A_in);
+  const auto J = view<M, N>(J_in);
+  const auto g = view<N, 1>(g_in);
+  auto Ainv_Jt = view_mut<N, M>(out.Ainv_Jt);
+  auto Lambda_inv = view_mut<M, M>(out.Lambda_inv);
+  auto Lambda = view_mut<M, M>(out.Lambda);
+  auto Jbar = view_mut<N, M>(out.Jbar);
+  auto Nproj = view_mut<N, N>(out.N);
+  auto p = view_mut<M, 1>(out.p);
+
+  // A = L L^T;  W = L^-1 J^T;  Lambda^-1 = J A^-1 J^T = W^T W;  A^-1 J^T = L^-T W.
+  // With the triangular inverse formed, every step is a small product, which vectorises.
+  using NxN = Eigen::Matrix<double, N, N, 0, kMaxN, kMaxN>;
+  NxN L(n, n);
+  NxN Linv = NxN::Zero(n, n);
+  L.template triangularView<Eigen::Lower>() = A;
+  if (!cholesky_in_place(L)) throw std::invalid_argument("operational_space: A is not positive definite");
+  lower_inverse(L, Linv);
+  Eigen::Matrix<double, N, M, 0, kMaxN, kMaxM> W(n, m);
+  W.noalias() = Linv.lazyProduct(J.transpose());
+  Lambda_inv.noalias() = W.transpose().lazyProduct(W);
+  Ainv_Jt.noalias() = Linv.transpose().lazyProduct(W);
+
+  // Fast path: Lambda = R^-T R^-1 with R = chol(Lambda^-1), kept only when no eigenvalue of
+  // Lambda^-1 can fall below tol * mu_max. Since mu_max <= |Lambda^-1|_F and
+  // 1 / mu_min = |Lambda|_2 <= |Lambda|_F, |Lambda^-1|_F |Lambda|_F < 1 / tol guarantees
+  // mu_min > tol * mu_max: the eigen-decomposition would keep every eigenvalue and give the
+  // same Lambda, at several times the cost. Otherwise (near a singularity) the robust path.
+  using MxM = Eigen::Matrix<double, M, M, 0, kMaxM, kMaxM>;
+  MxM R(m, m);
+  MxM Rinv = MxM::Zero(m, m);
+  R.template triangularView<Eigen::Lower>() = Lambda_inv;
+  bool well_conditioned = cholesky_in_place(R);
+  if (well_conditioned) {
+    lower_inverse(R, Rinv);
+    Lambda.noalias() = Rinv.transpose().lazyProduct(Rinv);
+    well_conditioned = Lambda_inv.norm() * Lambda.norm() * tol < 1.0;  // false for NaN too
+  }
+  if (well_conditioned) {
+    out.rank = m;  // out.eigen and out.inverse_eigenvalues are left untouched
+  } else {
+    invert_robustly(out, tol);
+  }
+
+  Jbar.noalias() = Ainv_Jt.lazyProduct(Lambda);  // Jbar = A^-1 J^T Lambda
+  Nproj.noalias() = -Jbar.lazyProduct(J);       // N = I - Jbar J
+  Nproj.diagonal().array() += 1.0;
+  p.noalias() = Jbar.transpose().lazyProduct(g);  // p = Jbar^T g
 }
 
 }  // namespace
@@ -73,51 +159,24 @@ TaskSpace::TaskSpace(Eigen::Index task_dim, Eigen::Index dof)
       p(task_dim),
       Ainv_Jt(dof, task_dim),
       Lambda_inv(task_dim, task_dim),
-      A_llt(dof),
-      task_llt(task_dim),
       eigen(task_dim),
       inverse_eigenvalues(task_dim) {}
 
 void operational_space(const Eigen::Ref<const Eigen::MatrixXd>& A,
                        const Eigen::Ref<const Eigen::MatrixXd>& J,
                        const Eigen::Ref<const Eigen::VectorXd>& g, TaskSpace& out, double tol) {
-  const Eigen::Index m = out.Lambda.rows(), n = out.N.rows();
+  const Index m = out.Lambda.rows(), n = out.N.rows();
   if (J.rows() != m || J.cols() != n || A.rows() != n || A.cols() != n || g.size() != n) {
     require_size(J, m, n, "operational_space: J");  // the messages are built only on failure
     require_size(A, n, n, "operational_space: A");
     require_size(g, n, 1, "operational_space: g");
   }
-
-  // A^-1 J^T by Cholesky
-  out.A_llt.compute(A);
-  if (out.A_llt.info() != Eigen::Success) {
-    throw std::invalid_argument("operational_space: A is not positive definite");
-  }
-  out.Ainv_Jt = J.transpose();
-  cholesky_solve_in_place(out.A_llt.matrixLLT(), out.Ainv_Jt);
-
-  out.Lambda_inv.setZero();
-  add_product(J, out.Ainv_Jt, out.Lambda_inv, 1.0);  // Lambda^-1 = J A^-1 J^T
-  if (!invert_well_conditioned(out, tol)) {
-    // Lambda^-1 = Q diag(mu) Q^T;  Lambda = Q diag(1/mu_i, mu_i > tol mu_max) Q^T
-    out.eigen.compute(out.Lambda_inv);
-    const auto& mu = out.eigen.eigenvalues();  // ascending
-    const double cutoff = tol * mu(m - 1);
-    out.rank = 0;
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const bool kept = mu(i) > cutoff && mu(i) > 0.0;
-      out.inverse_eigenvalues(i) = kept ? 1.0 / mu(i) : 0.0;
-      out.rank += kept ? 1 : 0;
-    }
-    const auto& Q = out.eigen.eigenvectors();
-    out.Lambda.noalias() = Q * out.inverse_eigenvalues.asDiagonal() * Q.transpose();
-  }
-
-  out.Jbar.setZero();
-  add_product(out.Ainv_Jt, out.Lambda, out.Jbar, 1.0);  // Jbar = A^-1 J^T Lambda
-  out.N.setIdentity();
-  add_product(out.Jbar, J, out.N, -1.0);             // N = I - Jbar J
-  out.p.noalias() = out.Jbar.transpose() * g;      // p = Jbar^T g
+  // Compiled sizes for the tasks of the problem set: the iiwa's pose (problems 2 and 3), the
+  // PUMA's tip position (1b) and the 3R arm's tip position (4).
+  if (m == 6 && n == 7) return operational_space_sized<6, 7>(A, J, g, out, tol);
+  if (m == 3 && n == 6) return operational_space_sized<3, 6>(A, J, g, out, tol);
+  if (m == 3 && n == 3) return operational_space_sized<3, 3>(A, J, g, out, tol);
+  operational_space_sized<Eigen::Dynamic, Eigen::Dynamic>(A, J, g, out, tol);
 }
 
 }  // namespace opspace

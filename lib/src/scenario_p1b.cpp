@@ -89,13 +89,13 @@ const hw2::p1b::State& Observer::observe(double t, const Eigen::Ref<const Eigen:
   s.t = t;
   s.q = q;
   s.dq = dq;
-  forward_kinematics(model_, data_, q);
+  mass_matrix_and_gravity(model_, data_, q);  // also the forward kinematics of q, used below
+  s.A = data_.A;
+  s.g = data_.g;
   s.x = point_position(model_, data_, tip_frame_, tip_point());
   point_jacobian(model_, data_, tip_frame_, tip_point(), J0_);
   s.Jv = J0_.topRows<3>();
   s.dx.noalias() = s.Jv * s.dq;
-  s.A = crba(model_, data_, q);
-  s.g = generalized_gravity(model_, data_, q);
   operational_space(s.A, s.Jv, s.g, task_);
   s.Lambda_v = task_.Lambda;
   s.Jbar_v = task_.Jbar;

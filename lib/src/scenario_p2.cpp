@@ -136,7 +136,9 @@ const hw2::p2::State& Observer::observe(double t, const Eigen::Ref<const Eigen::
   s.t = t;
   s.q = q;
   s.dq = dq;
-  s.A = crba(model_, data_, q);  // also the forward kinematics of q, used below
+  mass_matrix_and_gravity(model_, data_, q);  // also the forward kinematics of q, used below
+  s.A = data_.A;
+  s.g = data_.g;
   const Eigen::Isometry3d pose = frame_pose(model_, data_, tip_frame_);
   s.x_p = pose.translation();
   s.lambda = same_side(euler_parameters(pose.linear()), lambda_side);
@@ -145,7 +147,6 @@ const hw2::p2::State& Observer::observe(double t, const Eigen::Ref<const Eigen::
   const Vector6d twist = s.J0 * s.dq;
   s.v = twist.head<3>();
   s.w = twist.tail<3>();
-  s.g = generalized_gravity(model_, data_, q);
   operational_space(s.A, s.J0, s.g, task_);
   s.Lambda0 = task_.Lambda;
   s.Jbar0 = task_.Jbar;

@@ -43,6 +43,7 @@ TEST_CASE("kinematics and dynamics allocate nothing once Data exists") {
       sink += point_jacobian_dot_times_qdot(model, data, tip, p, q, qdot);
       crba(model, data, q);
       generalized_gravity(model, data, q);
+      mass_matrix_and_gravity(model, data, q);
       coriolis_centrifugal(model, data, q, qdot);
       rnea(model, data, q, qdot, tau);
       forward_dynamics(model, data, q, qdot, tau);

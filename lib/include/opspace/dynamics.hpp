@@ -16,6 +16,11 @@ const Eigen::MatrixXd& crba(const Model& model, Data& data, const Eigen::Ref<con
 const Eigen::VectorXd& generalized_gravity(const Model& model, Data& data,
                                            const Eigen::Ref<const Eigen::VectorXd>& q);
 
+/// A(q) and g(q) from a single forward-kinematics pass (data.A, data.g): what a control tick
+/// needs, at the cost of one pass instead of two. Afterwards data holds the poses of q, as
+/// after forward_kinematics(), for the functions of kinematics.hpp.
+void mass_matrix_and_gravity(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q);
+
 /// b(q, qdot), the Coriolis and centrifugal torques, by recursive Newton-Euler (data.b).
 const Eigen::VectorXd& coriolis_centrifugal(const Model& model, Data& data,
                                             const Eigen::Ref<const Eigen::VectorXd>& q,

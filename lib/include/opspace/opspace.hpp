@@ -14,7 +14,6 @@
 /// The default tolerance 1e-6 bounds the condition number of the inverted part at 1e6.
 #pragma once
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
@@ -47,12 +46,11 @@ struct TaskSpace {
   JointTaskMatrix Ainv_Jt;     ///< n x m A^-1 J^T
   TaskMatrix Lambda_inv;       ///< m x m J A^-1 J^T
 
-  // Factorisations. When |Lambda^-1|_F |Lambda|_F < 1 / tol (well away from a singularity,
-  // then every eigenvalue is kept) Lambda comes from task_llt, and eigen and
-  // inverse_eigenvalues are not updated; otherwise from the eigen-decomposition.
-  Eigen::LLT<JointMatrix> A_llt;
-  Eigen::LLT<TaskMatrix> task_llt;
-  Eigen::SelfAdjointEigenSolver<TaskMatrix> eigen;
+  // The robust path. When |Lambda^-1|_F |Lambda|_F < 1 / tol (well away from a singularity,
+  // where every eigenvalue is kept) Lambda comes from a Cholesky factorisation of Lambda^-1,
+  // and eigen and inverse_eigenvalues are not updated; otherwise from the eigen-decomposition.
+  Eigen::SelfAdjointEigenSolver<TaskMatrix> eigen;  ///< Lambda^-1 = Q diag(mu) Q^T
+  /// 1 / mu_i for the eigenvalues kept, 0 for those dropped
   TaskVector inverse_eigenvalues;
 };
 
