@@ -1,6 +1,6 @@
 // Time of one whole control tick, as the reference controllers compute it every 1 ms:
 // the library's State (kinematics, A, g, Lambda, Jbar, p) plus the law (solutions/), for
-// problems 1b (PUMA), 2 (iiwa, full law) and 4 (RRR); and of the operational-space kernels
+// problems 1b (PUMA), 2 (iiwa, full law), 3 (iiwa, motion and force) and 4 (RRR); and of the operational-space kernels
 // a tick is made of: the Cholesky (LLT) and LDLT solves of A, and operational_space()
 // (Lambda, Jbar, N, p) for the iiwa's 6-D task and the PUMA's 3-D task.
 // q changes every iteration, as in a control loop. Results: docs/performance.md.
@@ -107,6 +107,22 @@ void BM_P2Tick(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_P2Tick);
+
+// --- Problem 3: the same State, the unified motion and force law against the plane. ---
+
+// Everything p3::run() does in one step besides simulating: the goal, the State and the law.
+void BM_P3Tick(benchmark::State& state) {
+  P2Setup& s = p2_setup();
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const double t = 0.001 * static_cast<double>(k % 5000);
+    const opspace::hw2::p3::Goal goal = opspace::scenarios::p3::goal(t);
+    const opspace::hw2::p3::State& st = s.observer.observe(t, s.q[k % 64], s.dq[k % 64], goal.x_d.tail<4>());
+    benchmark::DoNotOptimize(opspace::hw2::p3::control(st, goal));
+    ++k;
+  }
+}
+BENCHMARK(BM_P3Tick);
 
 // --- Problem 4: the RRR arm near its singularity, robust and exact task quantities. ---
 

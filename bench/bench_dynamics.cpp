@@ -1,6 +1,7 @@
 // Time of the rigid-body algorithms a control tick calls, on the iiwa (7 joints) and the
-// PUMA (6 joints): A(q) by CRBA, g(q), b(q, qdot) by RNEA, and J0 of the operational point
-// (forward kinematics included). q changes every iteration, as in a control loop.
+// PUMA (6 joints): forward kinematics, A(q) by CRBA, g(q), both from one kinematics pass
+// (mass_matrix_and_gravity), b(q, qdot) by RNEA, and J0 of the operational point (forward
+// kinematics included). q changes every iteration, as in a control loop.
 // Results: docs/performance.md.
 #include <benchmark/benchmark.h>
 
@@ -50,6 +51,29 @@ void BM_MassMatrix(benchmark::State& state) {
   label(state, s);
 }
 
+void BM_ForwardKinematics(benchmark::State& state) {
+  Setup& s = robot(static_cast<int>(state.range(0)));
+  std::size_t k = 0;
+  for (auto _ : state) {
+    forward_kinematics(s.model, s.data, s.q[k++ % s.q.size()]);
+    benchmark::DoNotOptimize(s.data.body_pose.back().data());
+    benchmark::ClobberMemory();
+  }
+  label(state, s);
+}
+
+void BM_MassMatrixAndGravity(benchmark::State& state) {
+  Setup& s = robot(static_cast<int>(state.range(0)));
+  std::size_t k = 0;
+  for (auto _ : state) {
+    mass_matrix_and_gravity(s.model, s.data, s.q[k++ % s.q.size()]);
+    benchmark::DoNotOptimize(s.data.A.data());
+    benchmark::DoNotOptimize(s.data.g.data());
+    benchmark::ClobberMemory();
+  }
+  label(state, s);
+}
+
 void BM_Gravity(benchmark::State& state) {
   Setup& s = robot(static_cast<int>(state.range(0)));
   std::size_t k = 0;
@@ -85,8 +109,10 @@ void BM_Jacobian(benchmark::State& state) {
 }
 
 // Argument: 0 = iiwa7, 1 = PUMA.
+BENCHMARK(BM_ForwardKinematics)->Arg(0)->Arg(1);
 BENCHMARK(BM_MassMatrix)->Arg(0)->Arg(1);
 BENCHMARK(BM_Gravity)->Arg(0)->Arg(1);
+BENCHMARK(BM_MassMatrixAndGravity)->Arg(0)->Arg(1);
 BENCHMARK(BM_Coriolis)->Arg(0)->Arg(1);
 BENCHMARK(BM_Jacobian)->Arg(0)->Arg(1);
 
