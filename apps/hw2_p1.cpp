@@ -1,6 +1,5 @@
 // hw2-p1 PART [options]: problem 1b on the simulated PUMA 560 with the control law of
 // exercises/p1b.cpp (hw2-p1) or solutions/p1b.cpp (hw2-p1-sol).
-#include <cstdlib>
 #include <cstring>
 #include <iomanip>
 #include <iostream>
@@ -10,6 +9,8 @@
 #include <opspace/scenarios.hpp>
 #include <opspace/scenarios/p1b_visuals.hpp>
 #include <opspace/visuals.hpp>
+
+#include "cli.hpp"
 
 namespace {
 
@@ -38,24 +39,14 @@ void print_summary(const p1b::Result& r, const std::string& csv) {
   std::cout << std::setprecision(3) << "tip error after " << p1b::kSettleTime
             << " s:   max " << 1e3 * s.tip_error_max << " mm, RMS " << 1e3 * s.tip_error_rms << " mm\n"
             << "q2 tracking error after " << p1b::kSettleTime << " s: max " << s.q2_error_max
-            << " rad, RMS " << s.q2_error_rms << " rad\n"
-            << std::setprecision(1) << "peak joint torque:        " << s.peak_torque << " N m (joint "
-            << s.peak_torque_joint + 1 << ")\n"
-            << "torques clamped to limits: " << s.clamped_steps << " joint-steps\n";
-  if (!csv.empty()) std::cout << "log: " << csv << "\n";
-  if (!r.failure.empty()) std::cout << "the run stopped early: " << r.failure << "\n";
+            << " rad, RMS " << s.q2_error_rms << " rad\n";
+  cli::print_summary_end(r, csv);
 }
 
-/// What to write after a run.
-struct Pictures {
-  bool plots = true;
-  bool replay = true;
-};
-
 /// Runs PART2 and PART3 and draws their tip drift in one figure: the lesson of problem 1b.
-int compare(const opspace::scenarios::RunOptions& base, const std::string& prefix, const Pictures& pictures) {
+int compare(const cli::Options& cli_options, const std::string& prefix) {
   std::cout << "problem 1b, PART2 against PART3 (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  opspace::scenarios::RunOptions options = base;
+  opspace::scenarios::RunOptions options = cli_options.run;
   options.csv_path = prefix + "-part2.csv";
   const p1b::Result part2 = p1b::run(Part::kPseudoInverseNullspace, &opspace::hw2::p1b::control, options);
   options.csv_path = prefix + "-part3.csv";
@@ -66,7 +57,7 @@ int compare(const opspace::scenarios::RunOptions& base, const std::string& prefi
             << "  PART3 dynamically consistent projector: " << 1e3 * part3.summary.tip_error_max << " mm, "
             << 1e3 * part3.summary.tip_error_rms << " mm\n"
             << "logs: " << prefix << "-part2.csv " << prefix << "-part3.csv\n";
-  if (pictures.plots) opspace::visuals::publish({p1b::compare_figure(part2, part3)}, nullptr, prefix, std::cout);
+  if (cli_options.plots) opspace::visuals::publish({p1b::compare_figure(part2, part3)}, nullptr, prefix, std::cout);
   if (!part2.failure.empty()) std::cout << "PART2 stopped early: " << part2.failure << "\n";
   if (!part3.failure.empty()) std::cout << "PART3 stopped early: " << part3.failure << "\n";
   return part2.failure.empty() && part3.failure.empty() ? 0 : 1;
@@ -84,62 +75,34 @@ int main(int argc, char** argv) {
     return usage(argv[0], 2);
   }
   Part part = comparing ? Part::kPseudoInverseNullspace : static_cast<Part>(std::stoi(part_arg));
-  opspace::scenarios::RunOptions options;
-  options.csv_path = comparing ? "out/hw2-p1-compare.csv" : "out/hw2-p1-part" + part_arg + ".csv";
-  Pictures pictures;
-  for (int i = 2; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--no-plots") {
-      pictures.plots = false;
-    } else if (arg == "--no-replay") {
-      pictures.replay = false;
-    } else if (arg == "--no-joint-damping" && part == Part::kTipPd && !comparing) {
-      part = Part::kTipPdWithoutJointDamping;
-      options.csv_path = "out/hw2-p1-part1-no-damping.csv";
-    } else if (arg == "--duration" && i + 1 < argc) {
-      char* end = nullptr;
-      options.duration = std::strtod(argv[++i], &end);
-      if (*end != '\0' || !(options.duration > 0.0)) {
-        std::cerr << argv[0] << ": --duration needs a positive number of seconds\n";
-        return 2;
-      }
-    } else if (arg == "--csv" && i + 1 < argc) {
-      options.csv_path = argv[++i];
-    } else {
-      std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
-      return usage(argv[0], 2);
-    }
-  }
-  options.progress = &std::cerr;
-  const std::string prefix = opspace::visuals::prefix_of(options.csv_path);
-  if (comparing) {
-    try {
-      return compare(options, prefix, pictures);
-    } catch (const std::exception& e) {
-      std::cerr << argv[0] << ": " << e.what() << "\n";
-      return 1;
-    }
-  }
+  cli::Options options;
+  options.run.csv_path = comparing ? "out/hw2-p1-compare.csv" : "out/hw2-p1-part" + part_arg + ".csv";
+  cli::Program program;
+  program.usage = &usage;
+  program.help = false;  // only as the first argument
+  program.extra = [&](const std::string& arg) {
+    if (arg != "--no-joint-damping" || part != Part::kTipPd || comparing) return false;
+    part = Part::kTipPdWithoutJointDamping;
+    options.run.csv_path = "out/hw2-p1-part1-no-damping.csv";
+    return true;
+  };
+  const int code = cli::parse(argc, argv, 2, program, options);
+  if (code >= 0) return code;
+  options.run.progress = &std::cerr;
+  const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);
+  if (comparing) return cli::guarded(argv[0], [&] { return compare(options, prefix); });
   std::cout << "problem 1b, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  try {
-    const p1b::Result result = p1b::run(part, &opspace::hw2::p1b::control, options);
-    print_summary(result, options.csv_path);
+  return cli::guarded(argv[0], [&] {
+    const p1b::Result result = p1b::run(part, &opspace::hw2::p1b::control, options.run);
+    print_summary(result, options.run.csv_path);
     // After the run: drawing never slows the control loop.
     if (result.samples.empty()) {
       std::cout << "note:   no plots or replay: the run logged no sample\n";
       return 1;
     }
-    const std::vector<opspace::plot::Figure> figures =
-        pictures.plots ? p1b::figures(result, part) : std::vector<opspace::plot::Figure>{};
-    if (pictures.replay) {
-      const opspace::replay::Scene scene = p1b::replay_scene(result, part);
-      opspace::visuals::publish(figures, &scene, prefix, std::cout);
-    } else {
-      opspace::visuals::publish(figures, nullptr, prefix, std::cout);
-    }
+    cli::publish(
+        options, prefix, [&] { return p1b::figures(result, part); },
+        [&] { return p1b::replay_scene(result, part); });
     return result.failure.empty() ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::cerr << argv[0] << ": " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

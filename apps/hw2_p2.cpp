@@ -1,7 +1,5 @@
 // hw2-p2 [options]: problem 2 on the simulated KUKA iiwa with the functions of exercises/p2.cpp
 // (hw2-p2) or solutions/p2.cpp (hw2-p2-sol).
-#include <cstdlib>
-#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -10,6 +8,8 @@
 #include <opspace/scenarios.hpp>
 #include <opspace/scenarios/p2_visuals.hpp>
 #include <opspace/visuals.hpp>
+
+#include "cli.hpp"
 
 namespace {
 
@@ -37,63 +37,32 @@ void print_summary(const p2::Result& r, const std::string& csv) {
             << "smallest joint-limit margin (negative: past the limit): " << kDegPerRad * s.joint_limit_margin << " deg (joint "
             << s.joint_limit_joint + 1 << ")\n"
             << "joint drift over the last period: " << kDegPerRad * s.joint_drift_per_period << " deg (joint "
-            << s.joint_drift_joint + 1 << ")\n"
-            << std::setprecision(1) << "peak joint torque:        " << s.peak_torque << " N m (joint "
-            << s.peak_torque_joint + 1 << ")\n"
-            << "torques clamped to limits: " << s.clamped_steps << " joint-steps\n";
-  if (!csv.empty()) std::cout << "log: " << csv << "\n";
-  if (!r.failure.empty()) std::cout << "the run stopped early: " << r.failure << "\n";
+            << s.joint_drift_joint + 1 << ")\n";
+  cli::print_summary_end(r, csv);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  opspace::scenarios::RunOptions options;
-  options.duration = p2::kDefaultDuration;
-  options.csv_path = "out/hw2-p2.csv";
-  bool plots = true, replay = true;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      return usage(argv[0], 0);
-    } else if (arg == "--duration" && i + 1 < argc) {
-      char* end = nullptr;
-      options.duration = std::strtod(argv[++i], &end);
-      if (*end != '\0' || !(options.duration > 0.0)) {
-        std::cerr << argv[0] << ": --duration needs a positive number of seconds\n";
-        return 2;
-      }
-    } else if (arg == "--csv" && i + 1 < argc) {
-      options.csv_path = argv[++i];
-    } else if (arg == "--no-plots") {
-      plots = false;
-    } else if (arg == "--no-replay") {
-      replay = false;
-    } else {
-      std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
-      return usage(argv[0], 2);
-    }
-  }
-  options.progress = &std::cerr;
+  cli::Options options;
+  options.run.duration = p2::kDefaultDuration;
+  options.run.csv_path = "out/hw2-p2.csv";
+  cli::Program program;
+  program.usage = &usage;
+  const int code = cli::parse(argc, argv, 1, program, options);
+  if (code >= 0) return code;
+  options.run.progress = &std::cerr;
   std::cout << "problem 2, iiwa position + Euler-parameter tracking (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  try {
+  return cli::guarded(argv[0], [&] {
     const p2::Result result =
-        p2::run(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration, options);
-    print_summary(result, options.csv_path);
+        p2::run(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration, options.run);
+    print_summary(result, options.run.csv_path);
     // After the run: drawing never slows the control loop.
     if (!result.samples.empty()) {
-      const std::string prefix = opspace::visuals::prefix_of(options.csv_path);
-      const std::vector<opspace::plot::Figure> figures = plots ? p2::figures(result) : std::vector<opspace::plot::Figure>{};
-      if (replay) {
-        const opspace::replay::Scene scene = p2::replay_scene(result);
-        opspace::visuals::publish(figures, &scene, prefix, std::cout);
-      } else {
-        opspace::visuals::publish(figures, nullptr, prefix, std::cout);
-      }
+      cli::publish(
+          options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p2::figures(result); },
+          [&] { return p2::replay_scene(result); });
     }
     return result.failure.empty() ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::cerr << argv[0] << ": " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -1,7 +1,5 @@
 // hw2-p3 [options]: problem 3 on the simulated KUKA iiwa pushing on the plane x = 0.05, with the
 // functions of exercises/p3.cpp (hw2-p3) or solutions/p3.cpp (hw2-p3-sol).
-#include <cstdlib>
-#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -10,6 +8,8 @@
 #include <opspace/scenarios.hpp>
 #include <opspace/scenarios/p3_visuals.hpp>
 #include <opspace/visuals.hpp>
+
+#include "cli.hpp"
 
 namespace {
 
@@ -47,64 +47,32 @@ void print_summary(const p3::Result& r, const std::string& csv) {
             << kDegPerRad * s.rotation_x_error_rms << " deg\n"
             << "  tool tilt against the plane: max " << kDegPerRad * s.tilt_max << " deg, RMS "
             << kDegPerRad * s.tilt_rms << " deg\n"
-            << "  link7's origin along x:      " << 1e3 * s.x_min << " to " << 1e3 * s.x_max << " mm\n"
-            << std::setprecision(1) << "peak joint torque:        " << s.peak_torque << " N m (joint "
-            << s.peak_torque_joint + 1 << ")\n"
-            << "torques clamped to limits: " << s.clamped_steps << " joint-steps\n";
-  if (!csv.empty()) std::cout << "log: " << csv << "\n";
-  if (!r.failure.empty()) std::cout << "the run stopped early: " << r.failure << "\n";
+            << "  link7's origin along x:      " << 1e3 * s.x_min << " to " << 1e3 * s.x_max << " mm\n";
+  cli::print_summary_end(r, csv);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  opspace::scenarios::RunOptions options;
-  options.duration = p3::kDefaultDuration;
-  options.csv_path = "out/hw2-p3.csv";
-  bool plots = true, replay = true;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      return usage(argv[0], 0);
-    } else if (arg == "--no-plots") {
-      plots = false;
-    } else if (arg == "--no-replay") {
-      replay = false;
-    } else if (arg == "--duration" && i + 1 < argc) {
-      char* end = nullptr;
-      options.duration = std::strtod(argv[++i], &end);
-      if (*end != '\0' || !(options.duration > 0.0)) {
-        std::cerr << argv[0] << ": --duration needs a positive number of seconds\n";
-        return 2;
-      }
-    } else if (arg == "--csv" && i + 1 < argc) {
-      options.csv_path = argv[++i];
-    } else {
-      std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
-      return usage(argv[0], 2);
-    }
-  }
-  options.progress = &std::cerr;
+  cli::Options options;
+  options.run.duration = p3::kDefaultDuration;
+  options.run.csv_path = "out/hw2-p3.csv";
+  cli::Program program;
+  program.usage = &usage;
+  const int code = cli::parse(argc, argv, 1, program, options);
+  if (code >= 0) return code;
+  options.run.progress = &std::cerr;
   std::cout << "problem 3, iiwa unified motion and force control against a plane (" << OPSPACE_GRADED_LIBRARY
             << ")\n";
-  try {
-    const p3::Result result = p3::run(&opspace::hw2::p3::control, options);
-    print_summary(result, options.csv_path);
+  return cli::guarded(argv[0], [&] {
+    const p3::Result result = p3::run(&opspace::hw2::p3::control, options.run);
+    print_summary(result, options.run.csv_path);
     // After the run: drawing never slows the control loop.
     if (!result.samples.empty()) {
-      const std::vector<opspace::plot::Figure> figures =
-          plots ? p3::figures(result) : std::vector<opspace::plot::Figure>{};
-      const std::string prefix = opspace::visuals::prefix_of(options.csv_path);
-      if (replay) {
-        const opspace::replay::Scene scene = p3::replay_scene(result);
-        opspace::visuals::publish(figures, &scene, prefix, std::cout);
-      } else {
-        opspace::visuals::publish(figures, nullptr, prefix, std::cout);
-      }
+      cli::publish(
+          options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p3::figures(result); },
+          [&] { return p3::replay_scene(result); });
     }
     return result.failure.empty() ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::cerr << argv[0] << ": " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -2,8 +2,6 @@
 // exercises/p4.cpp (hw2-p4) or solutions/p4.cpp (hw2-p4-sol) to questions i-iv at
 // theta = (0, 90 deg, 0), then runs question v's controller and the plain operational-space
 // controller from the same start, side by side.
-#include <cstdlib>
-#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -15,6 +13,8 @@
 #include <opspace/scenarios/p4_visuals.hpp>
 #include <opspace/visuals.hpp>
 #include <opspace/urdf.hpp>
+
+#include "cli.hpp"
 
 namespace {
 
@@ -108,64 +108,46 @@ void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain
 
 int main(int argc, char** argv) {
   std::vector<Target> targets = {Target::kAlongZ0, Target::kAlongY0};
-  opspace::scenarios::RunOptions options;
-  options.duration = p4::kDuration;
-  bool plots = true, replay = true;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") return usage(argv[0], 0);
+  cli::Options options;
+  options.run.duration = p4::kDuration;
+  cli::Program program;
+  program.usage = &usage;
+  program.csv = false;  // one log per run, named after the target
+  program.extra = [&](const std::string& arg) {
     if (arg == "z") {
       targets = {Target::kAlongZ0};
     } else if (arg == "y") {
       targets = {Target::kAlongY0};
     } else if (arg == "all") {
       targets = {Target::kAlongZ0, Target::kAlongY0};
-    } else if (arg == "--no-plots") {
-      plots = false;
-    } else if (arg == "--no-replay") {
-      replay = false;
-    } else if (arg == "--duration" && i + 1 < argc) {
-      char* end = nullptr;
-      options.duration = std::strtod(argv[++i], &end);
-      if (*end != '\0' || !(options.duration > 0.0)) {
-        std::cerr << argv[0] << ": --duration needs a positive number of seconds\n";
-        return 2;
-      }
     } else {
-      std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
-      return usage(argv[0], 2);
+      return false;
     }
-  }
+    return true;
+  };
+  const int code = cli::parse(argc, argv, 1, program, options);
+  if (code >= 0) return code;
   std::cout << "problem 4, 3R elbow arm (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  try {
+  return cli::guarded(argv[0], [&] {
     questions_i_to_iv();
     bool ok = true;
     for (Target target : targets) {
       const std::string name = target == Target::kAlongZ0 ? "z" : "y";
-      options.progress = &std::cerr;
-      options.csv_path = "out/hw2-p4-" + name + ".csv";
-      const p4::Result mine = p4::run(target, &hw::control, options);
-      options.csv_path = "out/hw2-p4-" + name + "-plain.csv";
-      const p4::Result plain = p4::run_plain(target, options);
+      options.run.progress = &std::cerr;
+      options.run.csv_path = "out/hw2-p4-" + name + ".csv";
+      const p4::Result mine = p4::run(target, &hw::control, options.run);
+      options.run.csv_path = "out/hw2-p4-" + name + "-plain.csv";
+      const p4::Result plain = p4::run_plain(target, options.run);
       side_by_side(target, mine, plain);
       std::cout << "  logs: out/hw2-p4-" << name << ".csv, out/hw2-p4-" << name << "-plain.csv\n";
       // After the runs: drawing never slows the control loop.
       if (!mine.samples.empty()) {
-        const std::vector<opspace::plot::Figure> figures =
-            plots ? p4::figures(target, mine, plain) : std::vector<opspace::plot::Figure>{};
-        const std::string prefix = "out/hw2-p4-" + name;
-        if (replay) {
-          const opspace::replay::Scene scene = p4::replay_scene(target, mine, plain);
-          opspace::visuals::publish(figures, &scene, prefix, std::cout);
-        } else {
-          opspace::visuals::publish(figures, nullptr, prefix, std::cout);
-        }
+        cli::publish(
+            options, "out/hw2-p4-" + name, [&] { return p4::figures(target, mine, plain); },
+            [&] { return p4::replay_scene(target, mine, plain); });
       }
       ok = ok && mine.failure.empty();
     }
     return ok ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::cerr << argv[0] << ": " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

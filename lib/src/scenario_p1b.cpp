@@ -1,10 +1,9 @@
 #include <cmath>
-#include <memory>
-#include <iostream>
 
 #include "opspace/closed_loop.hpp"
 #include "opspace/dynamics.hpp"
 #include "opspace/scenarios.hpp"
+#include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation.hpp"
 #include "opspace/urdf.hpp"
 
@@ -125,35 +124,19 @@ Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
   Simulation sim(puma, settings);
   sim.set_state(initial_q(), Vector6d::Zero());
 
-  const double dt = sim.settings().dt;
-  const long steps = std::lround(options.duration / dt);
-  Result result;
-  result.samples.reserve(static_cast<std::size_t>(steps) + 1);
   const std::string who = "your " + describe(part).substr(0, describe(part).find(':')) + " controller";
-  Progress progress(options.progress ? *options.progress : std::clog, "hw2-p1", options.duration);
-  std::unique_ptr<CsvLog> csv;
-  if (!options.csv_path.empty()) csv = std::make_unique<CsvLog>(options.csv_path, csv_columns());
-
-  Vector6d tau;
-  try {
-    for (long k = 0; k <= steps; ++k) {
-      const double t = sim.time();
-      const hw2::p1b::State& state = observer.observe(t, sim.q(), sim.qdot());
-      const hw2::p1b::Goal g = goal(t, state.q);
-      tau = control(part, state, g);
-      check_torque(tau, 6, t, who);
-      result.samples.push_back({t, state.x, state.q, g.q_d(1), tau});
-      if (csv) csv->row(csv_row(result.samples.back(), g.x_d));
-      if (options.progress) progress.update(t);
-      if (k < steps) sim.step(tau);
-    }
-  } catch (const std::exception& e) {
-    result.failure = e.what();
-  }
-  if (options.progress) progress.finish();
-  result.summary.time_reached = sim.time();
-  result.summary.clamped_steps = sim.summary().total_clamped();
-  summarise(result, goal(0.0, initial_q()).x_d);
+  const Eigen::Vector3d x_d = goal(0.0, initial_q()).x_d;
+  Result result = run_closed_loop<Result>(
+      sim, "hw2-p1", csv_columns(), options,
+      [&](double t) {
+        const hw2::p1b::State& state = observer.observe(t, sim.q(), sim.qdot());
+        const hw2::p1b::Goal g = goal(t, state.q);
+        const Vector6d tau = control(part, state, g);
+        check_torque(tau, 6, t, who);
+        return Sample{t, state.x, state.q, g.q_d(1), tau};
+      },
+      [&](const Sample& s) { return csv_row(s, x_d); });
+  summarise(result, x_d);
   return result;
 }
 

@@ -1,13 +1,12 @@
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <limits>
-#include <memory>
 
 #include "opspace/closed_loop.hpp"
 #include "opspace/dynamics.hpp"
 #include "opspace/euler_params.hpp"
 #include "opspace/scenarios.hpp"
+#include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation.hpp"
 #include "opspace/urdf.hpp"
 
@@ -161,40 +160,23 @@ Result run(Controller control, DesiredAcceleration desired_acceleration, const R
   Simulation sim(iiwa);
   sim.set_state(initial_q(), Vector7d::Zero());
 
-  const double dt = sim.settings().dt;
-  const long steps = std::lround(options.duration / dt);
-  Result result;
-  result.samples.reserve(static_cast<std::size_t>(steps) + 1);
-  Progress progress(options.progress ? *options.progress : std::clog, "hw2-p2", options.duration);
-  std::unique_ptr<CsvLog> csv;
-  if (!options.csv_path.empty()) csv = std::make_unique<CsvLog>(options.csv_path, csv_columns());
-
-  Vector7d tau;
-  try {
-    for (long k = 0; k <= steps; ++k) {
-      const double t = sim.time();
-      hw2::p2::Goal g = goal(t);
-      g.xddot_d = desired_acceleration(t);
-      if (!g.xddot_d.allFinite()) {
-        throw ControllerError("your desired_acceleration (2a) returned a value that is not finite at t = " +
-                                  std::to_string(t) + " s",
-                              t);
-      }
-      const hw2::p2::State& state = observer.observe(t, sim.q(), sim.qdot(), g.x_d.tail<4>());
-      tau = control(state, g);
-      check_torque(tau, 7, t, "your controller");
-      result.samples.push_back({t, state.x_p, state.lambda, g.x_d, state.q, tau});
-      if (csv) csv->row(csv_row(result.samples.back()));
-      if (options.progress) progress.update(t);
-      if (k < steps) sim.step(tau);
-    }
-  } catch (const std::exception& e) {
-    result.failure = e.what();
-  }
-  if (options.progress) progress.finish();
-  result.summary.time_reached = sim.time();
-  result.summary.clamped_steps = sim.summary().total_clamped();
-  summarise(result, iiwa, dt);
+  Result result = run_closed_loop<Result>(
+      sim, "hw2-p2", csv_columns(), options,
+      [&](double t) {
+        hw2::p2::Goal g = goal(t);
+        g.xddot_d = desired_acceleration(t);
+        if (!g.xddot_d.allFinite()) {
+          throw ControllerError("your desired_acceleration (2a) returned a value that is not finite at t = " +
+                                    std::to_string(t) + " s",
+                                t);
+        }
+        const hw2::p2::State& state = observer.observe(t, sim.q(), sim.qdot(), g.x_d.tail<4>());
+        const Vector7d tau = control(state, g);
+        check_torque(tau, 7, t, "your controller");
+        return Sample{t, state.x_p, state.lambda, g.x_d, state.q, tau};
+      },
+      &csv_row);
+  summarise(result, iiwa, sim.settings().dt);
   return result;
 }
 

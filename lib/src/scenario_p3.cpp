@@ -1,11 +1,10 @@
 #include <algorithm>
 #include <cmath>
-#include <iostream>
-#include <memory>
 
 #include "opspace/closed_loop.hpp"
 #include "opspace/euler_params.hpp"
 #include "opspace/scenarios.hpp"
+#include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation.hpp"
 #include "opspace/urdf.hpp"
 
@@ -126,47 +125,30 @@ Result run(Controller control, const RunOptions& options) {
   sim.set_state(initial_q(), Vector7d::Zero());
   const int tool_body = sim.link_body(kTipLink);
 
-  const double dt = sim.settings().dt;
-  const long steps = std::lround(options.duration / dt);
-  Result result;
-  result.samples.reserve(static_cast<std::size_t>(steps) + 1);
-  Progress progress(options.progress ? *options.progress : std::clog, "hw2-p3", options.duration);
-  std::unique_ptr<CsvLog> csv;
-  if (!options.csv_path.empty()) csv = std::make_unique<CsvLog>(options.csv_path, csv_columns());
-
-  Vector7d tau;
-  try {
-    for (long k = 0; k <= steps; ++k) {
-      const double t = sim.time();
-      const hw2::p3::Goal g = goal(t);
-      const hw2::p3::State& state = observer.observe(t, sim.q(), sim.qdot(), g.x_d.tail<4>());
-      tau = control(state, g);
-      check_torque(tau, 7, t, "your controller");
-      Sample sample;
-      sample.t = t;
-      sample.x_p = state.x_p;
-      sample.lambda = state.lambda;
-      sample.x_d = g.x_d;
-      const Wrench& w = sim.contact_wrench(tool_body);
-      sample.tool_force = -w.force;
-      sample.tool_moment = -w.moment;
-      for (const Contact& c : sim.contacts()) sample.contact_points += c.body == tool_body ? 1 : 0;
-      const Eigen::Vector3d tool_axis = rotation_matrix(state.lambda).col(2);
-      sample.tilt = std::atan2(tool_axis.cross(Eigen::Vector3d::UnitX()).norm(), tool_axis.x());
-      sample.rotation_x_error = orientation_error(state.lambda, g.x_d.tail<4>()).x();
-      sample.q = state.q;
-      sample.tau = tau;
-      result.samples.push_back(sample);
-      if (csv) csv->row(csv_row(result.samples.back()));
-      if (options.progress) progress.update(t);
-      if (k < steps) sim.step(tau);
-    }
-  } catch (const std::exception& e) {
-    result.failure = e.what();
-  }
-  if (options.progress) progress.finish();
-  result.summary.time_reached = sim.time();
-  result.summary.clamped_steps = sim.summary().total_clamped();
+  Result result = run_closed_loop<Result>(
+      sim, "hw2-p3", csv_columns(), options,
+      [&](double t) {
+        const hw2::p3::Goal g = goal(t);
+        const hw2::p3::State& state = observer.observe(t, sim.q(), sim.qdot(), g.x_d.tail<4>());
+        const Vector7d tau = control(state, g);
+        check_torque(tau, 7, t, "your controller");
+        Sample sample;
+        sample.t = t;
+        sample.x_p = state.x_p;
+        sample.lambda = state.lambda;
+        sample.x_d = g.x_d;
+        const Wrench& w = sim.contact_wrench(tool_body);
+        sample.tool_force = -w.force;
+        sample.tool_moment = -w.moment;
+        for (const Contact& c : sim.contacts()) sample.contact_points += c.body == tool_body ? 1 : 0;
+        const Eigen::Vector3d tool_axis = rotation_matrix(state.lambda).col(2);
+        sample.tilt = std::atan2(tool_axis.cross(Eigen::Vector3d::UnitX()).norm(), tool_axis.x());
+        sample.rotation_x_error = orientation_error(state.lambda, g.x_d.tail<4>()).x();
+        sample.q = state.q;
+        sample.tau = tau;
+        return sample;
+      },
+      &csv_row);
   summarise(result);
   return result;
 }

@@ -1,10 +1,9 @@
 #include <cmath>
-#include <iostream>
-#include <memory>
 
 #include "opspace/closed_loop.hpp"
 #include "opspace/dynamics.hpp"
 #include "opspace/scenarios.hpp"
+#include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation.hpp"
 #include "opspace/singularity.hpp"
 #include "opspace/urdf.hpp"
@@ -55,32 +54,15 @@ Result simulate(Target target, const std::string& who, Law law, const RunOptions
   sim.set_state(initial_q(target), Eigen::Vector3d::Zero());
   const hw2::p4::Goal g = goal(target);
 
-  const double dt = sim.settings().dt;
-  const long steps = std::lround(options.duration / dt);
-  Result result;
-  result.samples.reserve(static_cast<std::size_t>(steps) + 1);
-  Progress progress(options.progress ? *options.progress : std::clog, "hw2-p4", options.duration);
-  std::unique_ptr<CsvLog> csv;
-  if (!options.csv_path.empty()) csv = std::make_unique<CsvLog>(options.csv_path, csv_columns());
-
-  Eigen::Vector3d tau;
-  try {
-    for (long k = 0; k <= steps; ++k) {
-      const double t = sim.time();
-      const hw2::p4::State& state = observer.observe(t, sim.q(), sim.qdot());
-      tau = law(state, observer.exact(), g);
-      check_torque(tau, 3, t, who);
-      result.samples.push_back({t, state.x, state.q, tau});
-      if (csv) csv->row(csv_row(result.samples.back(), g.x_d));
-      if (options.progress) progress.update(t);
-      if (k < steps) sim.step(tau);
-    }
-  } catch (const std::exception& e) {
-    result.failure = e.what();
-  }
-  if (options.progress) progress.finish();
-  result.summary.time_reached = sim.time();
-  result.summary.clamped_steps = sim.summary().total_clamped();
+  Result result = run_closed_loop<Result>(
+      sim, "hw2-p4", csv_columns(), options,
+      [&](double t) {
+        const hw2::p4::State& state = observer.observe(t, sim.q(), sim.qdot());
+        const Eigen::Vector3d tau = law(state, observer.exact(), g);
+        check_torque(tau, 3, t, who);
+        return Sample{t, state.x, state.q, tau};
+      },
+      [&](const Sample& s) { return csv_row(s, g.x_d); });
   summarise(result, g.x_d);
   return result;
 }

@@ -17,14 +17,7 @@ constexpr const char* kDesired = "#ff7f0e";
 constexpr const char* kPart2 = "#d62728";
 constexpr const char* kPart3 = "#2ca02c";
 
-/// The column `f(sample)` of every sample.
-template <class F>
-std::vector<double> column(const Result& r, F f) {
-  std::vector<double> out;
-  out.reserve(r.samples.size());
-  for (const Sample& s : r.samples) out.push_back(f(s));
-  return out;
-}
+using visuals::column;
 
 std::vector<double> times(const Result& r) {
   return column(r, [](const Sample& s) { return s.t; });
@@ -77,10 +70,7 @@ std::vector<plot::Figure> figures(const Result& result, Part part) {
     out.push_back(std::move(q2));
   }
 
-  std::vector<Eigen::VectorXd> tau;
-  tau.reserve(result.samples.size());
-  for (const Sample& s : result.samples) tau.emplace_back(s.tau);
-  out.push_back(visuals::torque_figure(load_urdf(robot_path(kRobotFile)), t, tau, who));
+  out.push_back(visuals::torque_figure(load_urdf(robot_path(kRobotFile)), t, visuals::torques(result), who));
   return out;
 }
 

@@ -14,14 +14,7 @@ constexpr const char* kMeasured = "#1f77b4";
 constexpr const char* kDesired = "#ff7f0e";
 constexpr const char* kWho = "problem 2, iiwa tracking";
 
-/// The column `f(sample)` of every sample.
-template <class F>
-std::vector<double> column(const Result& r, F f) {
-  std::vector<double> out;
-  out.reserve(r.samples.size());
-  for (const Sample& s : r.samples) out.push_back(f(s));
-  return out;
-}
+using visuals::column;
 
 double position_error(const Sample& s) { return (s.x_p - s.x_d.head<3>()).norm(); }
 
@@ -68,10 +61,7 @@ std::vector<plot::Figure> figures(const Result& result) {
   lambda.columns = 2;
   out.push_back(std::move(lambda));
 
-  std::vector<Eigen::VectorXd> tau;
-  tau.reserve(result.samples.size());
-  for (const Sample& s : result.samples) tau.emplace_back(s.tau);
-  out.push_back(visuals::torque_figure(load_urdf(robot_path(kRobotFile)), t, tau, kWho));
+  out.push_back(visuals::torque_figure(load_urdf(robot_path(kRobotFile)), t, visuals::torques(result), kWho));
   return out;
 }
 

@@ -4,6 +4,7 @@
 
 #include "opspace/euler_params.hpp"
 #include "opspace/urdf.hpp"
+#include "opspace/visuals.hpp"
 
 namespace opspace::scenarios::p3 {
 
@@ -15,14 +16,7 @@ constexpr const char* kDesired = "#ff7f0e";
 constexpr const char* kAverage = "#2ca02c";
 constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
 
-/// The column `f(sample)` of every sample.
-template <class F>
-std::vector<double> column(const Result& r, F f) {
-  std::vector<double> out;
-  out.reserve(r.samples.size());
-  for (const Sample& s : r.samples) out.push_back(f(s));
-  return out;
-}
+using visuals::column;
 
 /// The average of the last `window` values of `y` (fewer at the start).
 std::vector<double> moving_average(const std::vector<double>& y, std::size_t window) {

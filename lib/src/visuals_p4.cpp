@@ -12,14 +12,8 @@ namespace {
 constexpr const char* kMine = "#1f77b4";
 constexpr const char* kPlain = "#d62728";
 
-/// The column `f(sample)` of every sample.
-template <class F>
-std::vector<double> column(const Result& r, F f) {
-  std::vector<double> out;
-  out.reserve(r.samples.size());
-  for (const Sample& s : r.samples) out.push_back(f(s));
-  return out;
-}
+using visuals::column;
+using visuals::torques;
 
 std::vector<double> times(const Result& r) {
   return column(r, [](const Sample& s) { return s.t; });
@@ -27,13 +21,6 @@ std::vector<double> times(const Result& r) {
 
 std::vector<double> distance_mm(const Result& r, const Eigen::Vector3d& x_d) {
   return column(r, [&](const Sample& s) { return 1e3 * (s.x - x_d).norm(); });
-}
-
-std::vector<Eigen::VectorXd> torques(const Result& r) {
-  std::vector<Eigen::VectorXd> tau;
-  tau.reserve(r.samples.size());
-  for (const Sample& s : r.samples) tau.emplace_back(s.tau);
-  return tau;
 }
 
 }  // namespace

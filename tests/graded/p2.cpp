@@ -14,6 +14,7 @@
 #include <map>
 
 #include "suite.hpp"
+#include "support/problem2.hpp"
 #include "support/random.hpp"
 
 namespace opspace::grading {
@@ -23,6 +24,7 @@ namespace {
 namespace p2 = opspace::scenarios::p2;
 using hw2::p2::Vector6d;
 using hw2::p2::Vector7d;
+using testing::problem_set_xddot_d;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
@@ -37,18 +39,6 @@ constexpr int kSamples = 8;
 const Model& iiwa() {
   static const Model model = load_urdf(robot_path(p2::kRobotFile));
   return model;
-}
-
-// The problem set's solution of 2(a), written out term by term.
-Vector7d problem_set_xddot_d(double t) {
-  const double c = std::cos(2 * kPi * t / 5), sn = std::sin(2 * kPi * t / 5);
-  const double sa = std::sin(kPi / 4 * c), ca = std::cos(kPi / 4 * c);
-  const double k4 = std::pow(kPi, 4) / (100 * std::sqrt(2.0)), k3 = std::pow(kPi, 3) / (25 * std::sqrt(2.0));
-  Vector7d x;
-  x << 0.0, -2 * kPi * kPi / 125 * c, 4 * kPi * kPi / 125 * std::cos(4 * kPi * t / 5),
-      -k4 * sa * sn * sn - k3 * ca * c, -k4 * ca * sn * sn + k3 * sa * c, -k4 * sa * sn * sn - k3 * ca * c,
-      -k4 * ca * sn * sn + k3 * sa * c;
-  return x;
 }
 
 void desired_acceleration_is_the_second_derivative(const Hw2Api& api, Check& check) {

@@ -58,107 +58,96 @@ double relative(const Eigen::MatrixXd& E, const Eigen::MatrixXd& reference) {
   return E.norm() / std::max(1.0, reference.norm());
 }
 
+/// Calls trial(model, data) kTrials times on each model of all_models() (without gravity when
+/// `gravity` is false); a failure names the file.
+template <class Trial>
+void each_model(const Trial& trial, bool gravity = true) {
+  for (const std::string& file : all_models()) {
+    const Model model = gravity ? load_urdf(file) : without_gravity(load_urdf(file));
+    Data data(model);
+    CAPTURE(file);
+    for (int t = 0; t < kTrials; ++t) trial(model, data);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("the mass matrix is symmetric positive definite") {
   Random rng(401);
-  for (const std::string& file : all_models()) {
-    const Model model = load_urdf(file);
-    Data data(model);
-    CAPTURE(file);
-    for (int trial = 0; trial < kTrials; ++trial) {
-      const Eigen::MatrixXd& A = crba(model, data, random_q(model, rng));
-      CHECK_MESSAGE((A - A.transpose()).norm() < 1e-12 * A.norm(), "A = A^T: kinetic energy is a quadratic form");
-      CHECK_MESSAGE(Eigen::LLT<Eigen::MatrixXd>(A).info() == Eigen::Success,
-                    "A > 0: every motion of the joints has positive kinetic energy");
-    }
-  }
+  each_model([&](const Model& model, Data& data) {
+    const Eigen::MatrixXd& A = crba(model, data, random_q(model, rng));
+    CHECK_MESSAGE((A - A.transpose()).norm() < 1e-12 * A.norm(), "A = A^T: kinetic energy is a quadratic form");
+    CHECK_MESSAGE(Eigen::LLT<Eigen::MatrixXd>(A).info() == Eigen::Success,
+                  "A > 0: every motion of the joints has positive kinetic energy");
+  });
 }
 
 TEST_CASE("the mass matrix sums each link's mass and rotational inertia seen through its Jacobians") {
   // A = sum_i m_i Jc_i^T Jc_i + Jw_i^T R_i I_i R_i^T Jw_i  (Jc: Jacobian of the link's COM).
   Random rng(402);
-  for (const std::string& file : all_models()) {
-    const Model model = load_urdf(file);
-    Data data(model);
-    CAPTURE(file);
-    for (int trial = 0; trial < kTrials; ++trial) {
-      const Eigen::MatrixXd A = crba(model, data, random_q(model, rng));
-      Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(model.dof(), model.dof());
-      Matrix6Xd J(6, model.dof());
-      for (int i = 0; i < model.dof(); ++i) {
-        const Inertia& in = model.bodies[i].inertia;
-        point_jacobian(model, data, model.frame_id(model.bodies[i].link_name), in.com, J);
-        const Eigen::Matrix3d R = data.body_pose[i].linear();
-        sum += in.mass * J.topRows<3>().transpose() * J.topRows<3>() +
-               J.bottomRows<3>().transpose() * R * in.inertia * R.transpose() * J.bottomRows<3>();
-      }
-      CHECK_MESSAGE(relative(A - sum, A) < 1e-12, "CRBA disagrees with the Jacobian sum over the links");
+  each_model([&](const Model& model, Data& data) {
+    const Eigen::MatrixXd A = crba(model, data, random_q(model, rng));
+    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(model.dof(), model.dof());
+    Matrix6Xd J(6, model.dof());
+    for (int i = 0; i < model.dof(); ++i) {
+      const Inertia& in = model.bodies[i].inertia;
+      point_jacobian(model, data, model.frame_id(model.bodies[i].link_name), in.com, J);
+      const Eigen::Matrix3d R = data.body_pose[i].linear();
+      sum += in.mass * J.topRows<3>().transpose() * J.topRows<3>() +
+             J.bottomRows<3>().transpose() * R * in.inertia * R.transpose() * J.bottomRows<3>();
     }
-  }
+    CHECK_MESSAGE(relative(A - sum, A) < 1e-12, "CRBA disagrees with the Jacobian sum over the links");
+  });
 }
 
 TEST_CASE("column i of the mass matrix is the torque of a unit acceleration of joint i") {
   // With gravity off and qdot = 0, RNEA(q, 0, qdd) = A qdd, so A e_i = RNEA(q, 0, e_i) - RNEA(q, 0, 0).
   Random rng(403);
-  for (const std::string& file : all_models()) {
-    const Model model = without_gravity(load_urdf(file));
-    Data data(model);
-    CAPTURE(file);
-    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.dof());
-    for (int trial = 0; trial < kTrials; ++trial) {
-      const Eigen::VectorXd q = random_q(model, rng);
-      const Eigen::MatrixXd A = crba(model, data, q);
-      const Eigen::VectorXd tau0 = rnea(model, data, q, zero, zero);
-      for (int i = 0; i < model.dof(); ++i) {
-        const Eigen::VectorXd Ai = rnea(model, data, q, zero, Eigen::VectorXd::Unit(model.dof(), i)) - tau0;
-        CAPTURE(i);
-        CHECK_MESSAGE(relative(A.col(i) - Ai, A) < 1e-12, "CRBA and RNEA disagree on column ", i, " of A");
-      }
-    }
-  }
+  each_model(
+      [&](const Model& model, Data& data) {
+        const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.dof());
+        const Eigen::VectorXd q = random_q(model, rng);
+        const Eigen::MatrixXd A = crba(model, data, q);
+        const Eigen::VectorXd tau0 = rnea(model, data, q, zero, zero);
+        for (int i = 0; i < model.dof(); ++i) {
+          const Eigen::VectorXd Ai = rnea(model, data, q, zero, Eigen::VectorXd::Unit(model.dof(), i)) - tau0;
+          CAPTURE(i);
+          CHECK_MESSAGE(relative(A.col(i) - Ai, A) < 1e-12, "CRBA and RNEA disagree on column ", i, " of A");
+        }
+      },
+      /*gravity=*/false);
 }
 
 TEST_CASE("the gravity torques are the gradient of the potential energy") {
   // g(q) = dV/dq with V = - sum m_i gravity . c_i, by central differences.
   Random rng(404);
-  for (const std::string& file : all_models()) {
-    const Model model = load_urdf(file);
-    Data data(model);
-    CAPTURE(file);
-    for (int trial = 0; trial < kTrials; ++trial) {
-      const Eigen::VectorXd q = random_q(model, rng);
-      const Eigen::VectorXd g = generalized_gravity(model, data, q);
-      Eigen::VectorXd dV(model.dof());
-      for (int i = 0; i < model.dof(); ++i) {
-        const Eigen::VectorXd h = kStep * Eigen::VectorXd::Unit(model.dof(), i);
-        dV(i) = (potential_energy(model, data, q + h) - potential_energy(model, data, q - h)) / (2 * kStep);
-      }
-      CHECK_MESSAGE(relative(g - dV, g) < 1e-7, "g is not dV/dq: gravity enters RNEA wrongly");
+  each_model([&](const Model& model, Data& data) {
+    const Eigen::VectorXd q = random_q(model, rng);
+    const Eigen::VectorXd g = generalized_gravity(model, data, q);
+    Eigen::VectorXd dV(model.dof());
+    for (int i = 0; i < model.dof(); ++i) {
+      const Eigen::VectorXd h = kStep * Eigen::VectorXd::Unit(model.dof(), i);
+      dV(i) = (potential_energy(model, data, q + h) - potential_energy(model, data, q - h)) / (2 * kStep);
     }
-  }
+    CHECK_MESSAGE(relative(g - dV, g) < 1e-7, "g is not dV/dq: gravity enters RNEA wrongly");
+  });
 }
 
 TEST_CASE("half qdot^T A qdot is the sum of the links' kinetic energies") {
   // T = sum_i 1/2 m_i |v_ci|^2 + 1/2 w_i^T R_i I_i R_i^T w_i, with v_ci, w_i from point_velocity.
   Random rng(405);
-  for (const std::string& file : all_models()) {
-    const Model model = load_urdf(file);
-    Data data(model);
-    CAPTURE(file);
-    for (int trial = 0; trial < kTrials; ++trial) {
-      const Eigen::VectorXd qdot = rng.vector(model.dof(), -2, 2);
-      const Eigen::MatrixXd A = crba(model, data, random_q(model, rng));
-      double T = 0.0;
-      for (int i = 0; i < model.dof(); ++i) {
-        const Inertia& in = model.bodies[i].inertia;
-        const Vector6d V = point_velocity(model, data, model.frame_id(model.bodies[i].link_name), in.com, qdot);
-        const Eigen::Matrix3d R = data.body_pose[i].linear();
-        T += 0.5 * in.mass * V.head<3>().squaredNorm() + 0.5 * V.tail<3>().dot(R * in.inertia * R.transpose() * V.tail<3>());
-      }
-      CHECK(0.5 * qdot.dot(A * qdot) == doctest::Approx(T).epsilon(1e-12));
+  each_model([&](const Model& model, Data& data) {
+    const Eigen::VectorXd qdot = rng.vector(model.dof(), -2, 2);
+    const Eigen::MatrixXd A = crba(model, data, random_q(model, rng));
+    double T = 0.0;
+    for (int i = 0; i < model.dof(); ++i) {
+      const Inertia& in = model.bodies[i].inertia;
+      const Vector6d V = point_velocity(model, data, model.frame_id(model.bodies[i].link_name), in.com, qdot);
+      const Eigen::Matrix3d R = data.body_pose[i].linear();
+      T += 0.5 * in.mass * V.head<3>().squaredNorm() + 0.5 * V.tail<3>().dot(R * in.inertia * R.transpose() * V.tail<3>());
     }
-  }
+    CHECK(0.5 * qdot.dot(A * qdot) == doctest::Approx(T).epsilon(1e-12));
+  });
 }
 
 TEST_CASE("dA/dt - 2C is skew-symmetric") {
@@ -167,51 +156,41 @@ TEST_CASE("dA/dt - 2C is skew-symmetric") {
   // is the symmetric Christoffel form, so C e_j = B(qdot, e_j) is the Christoffel C, for which
   // dA/dt - 2C is skew. dA/dt = [A(q + h qdot) - A(q - h qdot)] / 2h.
   Random rng(406);
-  for (const std::string& file : all_models()) {
-    const Model model = load_urdf(file);
-    Data data(model);
-    CAPTURE(file);
+  each_model([&](const Model& model, Data& data) {
     const int n = model.dof();
-    for (int trial = 0; trial < kTrials; ++trial) {
-      const Eigen::VectorXd q = random_q(model, rng);
-      const Eigen::VectorXd qdot = rng.vector(n, -2, 2);
-      const Eigen::MatrixXd Ap = crba(model, data, q + kStep * qdot);
-      const Eigen::MatrixXd Am = crba(model, data, q - kStep * qdot);
-      const Eigen::MatrixXd Adot = (Ap - Am) / (2 * kStep);
-      Eigen::MatrixXd C(n, n);
-      for (int j = 0; j < n; ++j) {
-        const Eigen::VectorXd ej = Eigen::VectorXd::Unit(n, j);
-        const Eigen::VectorXd bp = coriolis_centrifugal(model, data, q, qdot + ej);
-        C.col(j) = (bp - coriolis_centrifugal(model, data, q, qdot - ej)) / 4;
-      }
-      CHECK_MESSAGE((C * qdot - coriolis_centrifugal(model, data, q, qdot)).norm() < 1e-10 * std::max(1.0, C.norm()),
-                    "C qdot must give back b");
-      const Eigen::MatrixXd N = Adot - 2 * C;
-      CHECK_MESSAGE(relative(N + N.transpose(), Adot) < 1e-7,
-                    "dA/dt - 2C is not skew: b and A do not come from the same kinetic energy");
+    const Eigen::VectorXd q = random_q(model, rng);
+    const Eigen::VectorXd qdot = rng.vector(n, -2, 2);
+    const Eigen::MatrixXd Ap = crba(model, data, q + kStep * qdot);
+    const Eigen::MatrixXd Am = crba(model, data, q - kStep * qdot);
+    const Eigen::MatrixXd Adot = (Ap - Am) / (2 * kStep);
+    Eigen::MatrixXd C(n, n);
+    for (int j = 0; j < n; ++j) {
+      const Eigen::VectorXd ej = Eigen::VectorXd::Unit(n, j);
+      const Eigen::VectorXd bp = coriolis_centrifugal(model, data, q, qdot + ej);
+      C.col(j) = (bp - coriolis_centrifugal(model, data, q, qdot - ej)) / 4;
     }
-  }
+    CHECK_MESSAGE((C * qdot - coriolis_centrifugal(model, data, q, qdot)).norm() < 1e-10 * std::max(1.0, C.norm()),
+                  "C qdot must give back b");
+    const Eigen::MatrixXd N = Adot - 2 * C;
+    CHECK_MESSAGE(relative(N + N.transpose(), Adot) < 1e-7,
+                  "dA/dt - 2C is not skew: b and A do not come from the same kinetic energy");
+  });
 }
 
 TEST_CASE("forward dynamics inverts inverse dynamics") {
   // qdd = FD(q, qdot, tau) must satisfy RNEA(q, qdot, qdd) = tau.
   Random rng(407);
-  for (const std::string& file : all_models()) {
-    const Model model = load_urdf(file);
-    Data data(model);
-    CAPTURE(file);
-    for (int trial = 0; trial < kTrials; ++trial) {
-      const Eigen::VectorXd q = random_q(model, rng);
-      const Eigen::VectorXd qdot = rng.vector(model.dof(), -2, 2);
-      const Eigen::VectorXd tau = rng.vector(model.dof(), -10, 10);
-      const Eigen::VectorXd qdd = forward_dynamics(model, data, q, qdot, tau);
-      CHECK(relative(rnea(model, data, q, qdot, qdd) - tau, tau) < 1e-8);
-      // And the pieces add up: tau = A qdd + b + g.
-      const Eigen::VectorXd sum = crba(model, data, q) * qdd + coriolis_centrifugal(model, data, q, qdot) +
-                                  generalized_gravity(model, data, q);
-      CHECK(relative(sum - tau, tau) < 1e-8);
-    }
-  }
+  each_model([&](const Model& model, Data& data) {
+    const Eigen::VectorXd q = random_q(model, rng);
+    const Eigen::VectorXd qdot = rng.vector(model.dof(), -2, 2);
+    const Eigen::VectorXd tau = rng.vector(model.dof(), -10, 10);
+    const Eigen::VectorXd qdd = forward_dynamics(model, data, q, qdot, tau);
+    CHECK(relative(rnea(model, data, q, qdot, qdd) - tau, tau) < 1e-8);
+    // And the pieces add up: tau = A qdd + b + g.
+    const Eigen::VectorXd sum = crba(model, data, q) * qdd + coriolis_centrifugal(model, data, q, qdot) +
+                                generalized_gravity(model, data, q);
+    CHECK(relative(sum - tau, tau) < 1e-8);
+  });
 }
 
 TEST_CASE("the PP robot's mass matrix is the closed form of problem 1a") {

@@ -8,36 +8,18 @@
 #include "opspace/euler_params.hpp"
 #include "opspace/scenarios.hpp"
 #include "opspace/urdf.hpp"
+#include "support/problem2.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;
+using opspace::testing::problem_set_x_d;
+using opspace::testing::problem_set_xddot_d;
 using opspace::testing::Random;
 namespace p2 = opspace::scenarios::p2;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// The problem set's x_d(t), written out independently of the library.
-Vector7d problem_set_x_d(double t) {
-  const double a = kPi / 4 * std::cos(2 * kPi * t / 5), s = 1 / std::sqrt(2.0);
-  Vector7d x;
-  x << 0.0, 0.5 + 0.1 * std::cos(2 * kPi * t / 5), 0.65 - 0.05 * std::cos(4 * kPi * t / 5), s * std::sin(a),
-      s * std::cos(a), s * std::sin(a), s * std::cos(a);
-  return x;
-}
-
-// The problem set's solution of 2(a), term by term.
-Vector7d problem_set_xddot_d(double t) {
-  const double c = std::cos(2 * kPi * t / 5), sn = std::sin(2 * kPi * t / 5);
-  const double sa = std::sin(kPi / 4 * c), ca = std::cos(kPi / 4 * c);
-  const double k4 = std::pow(kPi, 4) / (100 * std::sqrt(2.0)), k3 = std::pow(kPi, 3) / (25 * std::sqrt(2.0));
-  Vector7d x;
-  x << 0.0, -2 * kPi * kPi / 125 * c, 4 * kPi * kPi / 125 * std::cos(4 * kPi * t / 5),
-      -k4 * sa * sn * sn - k3 * ca * c, -k4 * ca * sn * sn + k3 * sa * c, -k4 * sa * sn * sn - k3 * ca * c,
-      -k4 * ca * sn * sn + k3 * sa * c;
-  return x;
-}
 
 }  // namespace
 

@@ -68,13 +68,21 @@ double model_potential(const Model& m, Data& d, const Eigen::VectorXd& q) {
   return v;
 }
 
-}  // namespace
-
-TEST_CASE("Bullet and our model agree on every robot: poses, mass matrix and one-step acceleration") {
+/// Calls body(file, model, data) on each robot of kRobots; a failure names the file.
+template <class Body>
+void each_robot(const Body& body) {
   for (const std::string& file : kRobots) {
     CAPTURE(file);
     const Model model = opspace::load_urdf(opspace::robot_path(file));
     Data data(model);
+    body(file, model, data);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Bullet and our model agree on every robot: poses, mass matrix and one-step acceleration") {
+  each_robot([&](const std::string& file, const Model& model, Data& data) {
     SimulationSettings settings;
     settings.integrator = Integrator::kEuler;
     Simulation sim(model, settings);
@@ -113,16 +121,13 @@ TEST_CASE("Bullet and our model agree on every robot: poses, mass matrix and one
     // start of the step, which must equal A^-1 (tau - b - g); here b comes from our A through
     // the Christoffel identity (its difference quotients are good to ~1e-9).
     CHECK_MESSAGE(worst_qdd < 1e-8, "Bullet's one-step acceleration should be A^-1 (tau - b - g) of our model");
-  }
+  });
 }
 
 // Two independent implementations of the same dynamics: Bullet's articulated-body step and
 // our CRBA + RNEA (b, g) solved by Cholesky.
 TEST_CASE("Bullet's one-step acceleration equals our forward_dynamics on every robot") {
-  for (const std::string& file : kRobots) {
-    CAPTURE(file);
-    const Model model = opspace::load_urdf(opspace::robot_path(file));
-    Data data(model);
+  each_robot([&](const std::string& file, const Model& model, Data& data) {
     SimulationSettings settings;
     settings.integrator = Integrator::kEuler;
     Simulation sim(model, settings);
@@ -138,14 +143,11 @@ TEST_CASE("Bullet's one-step acceleration equals our forward_dynamics on every r
     MESSAGE(file << ": forward_dynamics vs Bullet, worst relative difference " << worst);
     // The issue's 1e-8 relative (see the test above for the reason).
     CHECK_MESSAGE(worst < 1e-8, "Bullet's one-step acceleration should be opspace::forward_dynamics");
-  }
+  });
 }
 
 TEST_CASE("Torques g(q) hold every robot still for 5 s") {
-  for (const std::string& file : kRobots) {
-    CAPTURE(file);
-    const Model model = opspace::load_urdf(opspace::robot_path(file));
-    Data data(model);
+  each_robot([&](const std::string& file, const Model& model, Data& data) {
     Simulation sim(model);
     opspace::testing::Random rnd(12);
     const Eigen::VectorXd q0 = random_state(model, rnd).q;
@@ -156,14 +158,11 @@ TEST_CASE("Torques g(q) hold every robot still for 5 s") {
     // Our g balances Bullet's gravity to rounding (~1e-15 relative); an error e in the
     // acceleration drifts q by e t^2 / 2, so 1e-9 rad over 5 s allows e ~ 1e-10 rad/s^2.
     CHECK_MESSAGE(drift < 1e-9, "a robot fed its own gravity torques should not move");
-  }
+  });
 }
 
 TEST_CASE("Zero torque conserves every robot's energy over 5 s of free motion") {
-  for (const std::string& file : kRobots) {
-    CAPTURE(file);
-    const Model model = opspace::load_urdf(opspace::robot_path(file));
-    Data data(model);
+  each_robot([&](const std::string& file, const Model& model, Data& data) {
     Simulation sim(model);  // RK4, the default
     opspace::testing::Random rnd(13);
     const State s = random_state(model, rnd);
@@ -191,7 +190,7 @@ TEST_CASE("Zero torque conserves every robot's energy over 5 s of free motion") 
     // Bound: 1e-5 of the kinetic energy reached. RK4's error per step is O(dt^5); measured: rrr
     // 3e-10, PUMA 5e-8, iiwa 6e-7 relative (docs/simulation.md); Euler gains percents.
     CHECK_MESSAGE(worst < 1e-5 * max_kinetic, "energy drift " << worst << " J");
-  }
+  });
 }
 
 namespace {

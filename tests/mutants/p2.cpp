@@ -43,33 +43,11 @@ Vector7d law(const State& s, const Goal& goal, const Mistakes& m) {
   return tau;
 }
 
-Vector7d without_feed_forward(const State& s, const Goal& goal) {
+// The law with one mistake made: &with<&Mistakes::no_feed_forward> and so on.
+template <bool Mistakes::*kMistake>
+Vector7d with(const State& s, const Goal& goal) {
   Mistakes m;
-  m.no_feed_forward = true;
-  return law(s, goal, m);
-}
-
-Vector7d E_pinv_at_lambda_d(const State& s, const Goal& goal) {
-  Mistakes m;
-  m.E_pinv_at_lambda_d = true;
-  return law(s, goal, m);
-}
-
-Vector7d delta_phi_flipped(const State& s, const Goal& goal) {
-  Mistakes m;
-  m.delta_phi_flipped = true;
-  return law(s, goal, m);
-}
-
-Vector7d without_nullspace_damping(const State& s, const Goal& goal) {
-  Mistakes m;
-  m.no_nullspace_damping = true;
-  return law(s, goal, m);
-}
-
-Vector7d damping_not_projected(const State& s, const Goal& goal) {
-  Mistakes m;
-  m.damping_not_projected = true;
+  m.*kMistake = true;
   return law(s, goal, m);
 }
 
@@ -104,27 +82,27 @@ std::vector<Mutant> p2_mutants() {
       // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation
       // (closed forms in tests/graded/p2.cpp); the arm still moves as it should otherwise.
       {"no feed-forward acceleration [vdot_d; wdot_d]",
-       [](grading::Hw2Api& api) { api.p2.control = &without_feed_forward; },
+       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::no_feed_forward>; },
        {law, position, orientation}},
       // For unit Euler parameters delta_phi is the same at lambda_d (test_euler_params.cpp), and
       // E^+(lambda_d) xdot_d differs from E^+(lambda) xdot_d only to second order in the
       // tracking error: in simulation the mistake is invisible, only the law test sees it.
       {"E^+ evaluated at lambda_d instead of the current lambda",
-       [](grading::Hw2Api& api) { api.p2.control = &E_pinv_at_lambda_d; },
+       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::E_pinv_at_lambda_d>; },
        {law}},
       // Positive orientation feedback: link7 turns away from lambda_d until the error reaches
       // 180 degrees (lambda flips), the arm swings far off its path and past joint limits.
       {"delta_phi with the wrong sign, E^+ (lambda_d - lambda)",
-       [](grading::Hw2Api& api) { api.p2.control = &delta_phi_flipped; },
+       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::delta_phi_flipped>; },
        {law, position, orientation, continuous, limits, drift}},
       // The task is still tracked, but the elbow's self-motion is undamped: the arm's posture
       // wanders by tens of degrees per period.
       {"no null-space damping N0^T A (-kvj dq)",
-       [](grading::Hw2Api& api) { api.p2.control = &without_nullspace_damping; },
+       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::no_nullspace_damping>; },
        {law, drift}},
       // A (-kvj dq) unprojected damps the task motion too: the arm lags by centimetres.
       {"joint damping A (-kvj dq) added without the projector N0^T",
-       [](grading::Hw2Api& api) { api.p2.control = &damping_not_projected; },
+       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::damping_not_projected>; },
        {law, position, orientation}},
       // The run feeds the student's 2(a) to the controller, yet the missing terms are
       // -a'^2 lambda_d, along lambda_d: the part of lambdaddot_d that only keeps |lambda_d| = 1,

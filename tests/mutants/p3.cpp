@@ -35,21 +35,11 @@ Vector7d law(const State& s, const Goal& goal, const Mistakes& m) {
   return s.J0.transpose() * F + s.N0.transpose() * (s.A * (-goal.kvj * s.dq) + s.g);
 }
 
-Vector7d swapped(const State& s, const Goal& goal) {
+// The law with one mistake made: &with<&Mistakes::swapped> and so on.
+template <bool Mistakes::*kMistake>
+Vector7d with(const State& s, const Goal& goal) {
   Mistakes m;
-  m.swapped = true;
-  return law(s, goal, m);
-}
-
-Vector7d without_omega_bar(const State& s, const Goal& goal) {
-  Mistakes m;
-  m.no_omega_bar = true;
-  return law(s, goal, m);
-}
-
-Vector7d force_times_lambda(const State& s, const Goal& goal) {
-  Mistakes m;
-  m.force_times_lambda = true;
+  m.*kMistake = true;
   return law(s, goal, m);
 }
 
@@ -74,20 +64,20 @@ std::vector<Mutant> p3_mutants() {
        [](grading::Hw2Api& api) {
          api.p3.motion_selection = &hw2::p3::force_selection;
          api.p3.force_selection = &hw2::p3::motion_selection;
-         api.p3.control = &swapped;
+         api.p3.control = &with<&Mistakes::swapped>;
        },
        {selection, law, force, yz, rx, kept}},
       // The scenario's F_d = [10, 0, 0, 0, 0, 0] lies in the force directions already, so
       // without Omega-bar the torque is the same in simulation: only the law test, whose F_d
       // has components in the motion directions too, sees it.
       {"the desired force F_d added without Omega-bar",
-       [](grading::Hw2Api& api) { api.p3.control = &without_omega_bar; },
+       [](grading::Hw2Api& api) { api.p3.control = &with<&Mistakes::no_omega_bar>; },
        {law}},
       // Lambda0 F_d = 10 Lambda0(:, 0): at the start Lambda0(0, 0) = 3.4 kg, so the tool pushes
       // 33 N on average instead of 10 N; Lambda0(1, 0) = 1.1 kg adds an 11 N push along y that
       // the motion loop must fight, 33 mm RMS of y, z error.
       {"the desired force multiplied by Lambda0 (treated as an acceleration)",
-       [](grading::Hw2Api& api) { api.p3.control = &force_times_lambda; },
+       [](grading::Hw2Api& api) { api.p3.control = &with<&Mistakes::force_times_lambda>; },
        {law, force, yz}},
   };
 }

@@ -27,6 +27,14 @@ looks_like() {
     *) return 1 ;;
   esac
 }
+# run NAME ARG...: runs the program in $work, its output printed and kept in $work/out.txt;
+# "NAME failed" when it fails.
+run() {
+  local name=$1; shift
+  (cd "$work" && "$program" "$@") > "$work/out.txt" 2>&1 || { cat "$work/out.txt"; fail "$name failed"; }
+  cat "$work/out.txt"
+}
+need_gnuplot() { command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"; }
 check_images() {  # check_images LOG EXPECTED_NAME...
   local log=$1; shift
   mapfile -t images < <(sed -n 's/^plot: *//p' "$log")
@@ -43,42 +51,34 @@ check_images() {  # check_images LOG EXPECTED_NAME...
 
 case "$mode" in
   plots)
-    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
+    need_gnuplot
     # 3 simulated seconds: every figure has data, the test stays short.
-    (cd "$work" && "$program" 3 --duration 3 --csv run/p3.csv --no-replay) > "$work/out.txt" 2>&1 ||
-      { cat "$work/out.txt"; fail "$program 3 failed"; }
-    cat "$work/out.txt"
+    run "$program 3" 3 --duration 3 --csv run/p3.csv --no-replay
     cd "$work"
     expected=()
     for f in tip error q2 torques; do expected+=("run/p3-$f.png" "run/p3-$f.svg"); done
     check_images out.txt "${expected[@]}"
     ;;
   plots-p2)
-    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
-    (cd "$work" && "$program" --duration 2 --csv run/p2.csv --no-replay) > "$work/out.txt" 2>&1 ||
-      { cat "$work/out.txt"; fail "$program failed"; }
-    cat "$work/out.txt"
+    need_gnuplot
+    run "$program" --duration 2 --csv run/p2.csv --no-replay
     cd "$work"
     expected=()
     for f in position error lambda torques; do expected+=("run/p2-$f.png" "run/p2-$f.svg"); done
     check_images out.txt "${expected[@]}"
     ;;
   plots-p3)
-    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
+    need_gnuplot
     # 2 simulated seconds: the contact has settled, every figure has data.
-    (cd "$work" && "$program" --duration 2 --csv run/p3.csv --no-replay) > "$work/out.txt" 2>&1 ||
-      { cat "$work/out.txt"; fail "$program failed"; }
-    cat "$work/out.txt"
+    run "$program" --duration 2 --csv run/p3.csv --no-replay
     cd "$work"
     expected=()
     for f in force tracking tilt; do expected+=("run/p3-$f.png" "run/p3-$f.svg"); done
     check_images out.txt "${expected[@]}"
     ;;
   plots-p4)
-    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
-    (cd "$work" && "$program" --duration 1 --no-replay) > "$work/out.txt" 2>&1 ||
-      { cat "$work/out.txt"; fail "$program failed"; }
-    cat "$work/out.txt"
+    need_gnuplot
+    run "$program" --duration 1 --no-replay
     cd "$work"
     expected=()
     for d in z y; do
@@ -95,11 +95,9 @@ case "$mode" in
     [ -s "$work/run/p1-tip.gp" ] && [ -s "$work/run/p1-tip.dat" ] || fail "the gnuplot script and data were not kept"
     ;;
   compare)
-    command -v gnuplot >/dev/null || skip "gnuplot is not installed (apt-get install gnuplot-nox)"
+    need_gnuplot
     # 3 s: PART2's tip drifts from the first second on (docs/problem1b.md).
-    (cd "$work" && "$program" compare --duration 3 --csv run/cmp.csv) > "$work/out.txt" 2>&1 ||
-      { cat "$work/out.txt"; fail "$program compare failed"; }
-    cat "$work/out.txt"
+    run "$program compare" compare --duration 3 --csv run/cmp.csv
     cd "$work"
     check_images out.txt run/cmp-drift.png run/cmp-drift.svg
     [ -s run/cmp-part2.csv ] && [ -s run/cmp-part3.csv ] || fail "the two logs were not written"
@@ -109,9 +107,7 @@ case "$mode" in
     [ -x "$node" ] || skip "node is not installed: the replay viewer cannot be bundled or checked"
     [ -x "${CHROMIUM:-/usr/bin/chromium}" ] || skip "Chromium is not installed (apt-get install chromium)"
     # 4 s at 50 frames/s: 200 frames, enough motion of joint 2 to see.
-    (cd "$work" && "$program" 3 --duration 4 --csv run/p3.csv --no-plots) > "$work/out.txt" 2>&1 ||
-      { cat "$work/out.txt"; fail "$program 3 failed"; }
-    cat "$work/out.txt"
+    run "$program 3" 3 --duration 4 --csv run/p3.csv --no-plots
     if grep -q '^note: no 3D replay' "$work/out.txt"; then skip "the viewer bundle was not built (see the note above)"; fi
     page=$(sed -n 's/^replay: *//p' "$work/out.txt")
     [ -n "$page" ] || fail "no 'replay:' line printed"

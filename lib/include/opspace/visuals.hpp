@@ -19,6 +19,25 @@ namespace opspace::visuals {
 /// "out/hw2-p1-part3.csv" -> "out/hw2-p1-part3": the stem every picture of a run starts with.
 std::string prefix_of(const std::string& csv_path);
 
+/// The values `f(sample)` of every sample of a run (`result.samples`), in order: one plotted
+/// column.
+template <class Result, class F>
+std::vector<double> column(const Result& result, F f) {
+  std::vector<double> out;
+  out.reserve(result.samples.size());
+  for (const auto& sample : result.samples) out.push_back(f(sample));
+  return out;
+}
+
+/// The torques `tau` of every sample of a run, as torque_figure() takes them.
+template <class Result>
+std::vector<Eigen::VectorXd> torques(const Result& result) {
+  std::vector<Eigen::VectorXd> tau;
+  tau.reserve(result.samples.size());
+  for (const auto& sample : result.samples) tau.emplace_back(sample.tau);
+  return tau;
+}
+
 /// One panel per joint: the torques tau[k](i) requested at times t[k] against the joint's
 /// URDF effort limit (a figure every problem draws).
 plot::Figure torque_figure(const Model& model, const std::vector<double>& t,

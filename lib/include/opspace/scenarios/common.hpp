@@ -4,6 +4,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace opspace::scenarios {
 
@@ -12,6 +13,14 @@ struct RunOptions {
   double duration = 20.0;                ///< simulated seconds
   std::string csv_path;                  ///< empty: no CSV log
   std::ostream* progress = nullptr;      ///< null: silent
+};
+
+/// What a closed-loop run recorded: a problem's Result is RunResult<its Sample, its Summary>.
+template <class Sample, class Summary>
+struct RunResult {
+  std::vector<Sample> samples;  ///< one per 1 ms step
+  Summary summary;
+  std::string failure;          ///< empty, or what stopped the run early (NaN torque, ...)
 };
 
 }  // namespace opspace::scenarios

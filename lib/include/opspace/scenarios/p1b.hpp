@@ -78,11 +78,7 @@ struct Summary {
   double time_reached = 0.0;   ///< simulated time at the end (s)
 };
 
-struct Result {
-  std::vector<Sample> samples;  ///< one per 1 ms step
-  Summary summary;
-  std::string failure;          ///< empty, or what stopped the run early (NaN torque, ...)
-};
+using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
 /// Runs problem 1b's scenario with `control` applying law `part` every 1 ms step.
 Result run(hw2::p1b::Part part, Controller control, const RunOptions& options);

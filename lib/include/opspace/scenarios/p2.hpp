@@ -102,11 +102,7 @@ struct Summary {
   double time_reached = 0.0;           ///< simulated time at the end (s)
 };
 
-struct Result {
-  std::vector<Sample> samples;  ///< one per 1 ms step
-  Summary summary;
-  std::string failure;          ///< empty, or what stopped the run early (NaN torque, ...)
-};
+using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
 /// Runs problem 2's scenario: every 1 ms step, goal.xddot_d = desired_acceleration(t), then
 /// tau = control(state, goal).

@@ -90,11 +90,7 @@ struct Summary {
   double time_reached = 0.0;         ///< simulated time at the end (s)
 };
 
-struct Result {
-  std::vector<Sample> samples;  ///< one per 1 ms step
-  Summary summary;
-  std::string failure;          ///< empty, or what stopped the run early (NaN torque, ...)
-};
+using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
 /// Runs problem 3's scenario: the plane at x = 0.05, then every 1 ms step
 /// tau = control(state, goal(t)).

@@ -95,11 +95,7 @@ struct Summary {
   double time_reached = 0.0;  ///< simulated time at the end (s)
 };
 
-struct Result {
-  std::vector<Sample> samples;  ///< one per 1 ms step
-  Summary summary;
-  std::string failure;          ///< empty, or what stopped the run early
-};
+using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
 /// Runs question v's scenario toward `target` with `control` every 1 ms step.
 Result run(Target target, Controller control, const RunOptions& options);

@@ -1,0 +1,59 @@
+// What the hw2-p1 .. hw2-p4 programs share: the options --duration, --csv, --no-plots and
+// --no-replay, the end of the run summary, the pictures after a run, and the error exit.
+#pragma once
+
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <opspace/plot.hpp>
+#include <opspace/replay.hpp>
+#include <opspace/scenarios/common.hpp>
+
+namespace cli {
+
+/// What a program's command line sets.
+struct Options {
+  opspace::scenarios::RunOptions run;  ///< duration and CSV log of a run
+  bool plots = true;                   ///< --no-plots: no PNG/SVG plots
+  bool replay = true;                  ///< --no-replay: no 3D replay page
+};
+
+/// The program's side of parse(): its usage text and the options only it takes.
+struct Program {
+  /// Prints the usage of `program` to stdout (code 0) or stderr and returns `code`.
+  int (*usage)(const char* program, int code) = nullptr;
+  bool help = true;  ///< --help and -h print the usage (exit 0)
+  bool csv = true;   ///< --csv PATH sets the log
+  /// Takes one of the program's own arguments; returns false for an unknown one.
+  std::function<bool(const std::string& arg)> extra;
+};
+
+/// Parses argv[first] .. argv[argc - 1] into `options`: --help, -h, --duration SECONDS,
+/// --csv PATH, --no-plots, --no-replay, then program.extra. Returns -1 when the program goes
+/// on, otherwise its exit code: 0 after --help, 2 after a bad argument (message on stderr).
+int parse(int argc, char** argv, int first, const Program& program, Options& options);
+
+/// Prints the lines every run summary ends with: peak torque, clamped steps, the log `csv`
+/// (unless empty) and why the run stopped early (unless it did not).
+template <class Result>
+void print_summary_end(const Result& r, const std::string& csv) {
+  std::cout << std::setprecision(1) << "peak joint torque:        " << r.summary.peak_torque << " N m (joint "
+            << r.summary.peak_torque_joint + 1 << ")\n"
+            << "torques clamped to limits: " << r.summary.clamped_steps << " joint-steps\n";
+  if (!csv.empty()) std::cout << "log: " << csv << "\n";
+  if (!r.failure.empty()) std::cout << "the run stopped early: " << r.failure << "\n";
+}
+
+/// Writes the plots `figures()` (if options.plots) and the replay page `scene()` (if
+/// options.replay) named after `prefix`, printing their paths on stdout.
+void publish(const Options& options, const std::string& prefix,
+             const std::function<std::vector<opspace::plot::Figure>()>& figures,
+             const std::function<opspace::replay::Scene()>& scene);
+
+/// Returns body(); an exception instead prints "program: what" on stderr and returns 1.
+int guarded(const char* program, const std::function<int()>& body);
+
+}  // namespace cli
