@@ -25,7 +25,7 @@ opspace_say() { printf 'opspace: %s\n' "$*" >&2; }
 opspace_missing() {
   local p
   for p in "$@"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || printf '%s\n' "$p"
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep "install ok installed" >/dev/null || printf '%s\n' "$p"
   done
 }
 
