@@ -6,6 +6,7 @@
 #include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation.hpp"
 #include "opspace/urdf.hpp"
+#include "observe.hpp"
 
 namespace opspace::scenarios::p1b {
 
@@ -75,26 +76,14 @@ hw2::p1b::Goal goal(double t, const Eigen::Ref<const Vector6d>& q) {
 }
 
 Observer::Observer(const Model& puma)
-    : model_(puma), data_(puma), task_(3, puma.dof()), J0_(6, puma.dof()), tip_frame_(puma.frame_id(kTipLink)) {
-  if (puma.dof() != 6) {
-    throw std::invalid_argument("p1b::Observer: " + puma.source + " has " + std::to_string(puma.dof()) +
-                                " joints; problem 1b needs the 6-joint PUMA");
-  }
-}
+    : model_(require_dof(puma, 6, "p1b::Observer", "problem 1b needs the 6-joint PUMA")),
+      data_(puma), task_(3, puma.dof()), J0_(6, puma.dof()), tip_frame_(puma.frame_id(kTipLink)) {}
 
 const hw2::p1b::State& Observer::observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                                          const Eigen::Ref<const Eigen::VectorXd>& dq) {
   hw2::p1b::State& s = state_;
-  s.t = t;
-  s.q = q;
-  s.dq = dq;
-  mass_matrix_and_gravity(model_, data_, q);  // also the forward kinematics of q, used below
-  s.A = data_.A;
-  s.g = data_.g;
-  s.x = point_position(model_, data_, tip_frame_, tip_point());
-  point_jacobian(model_, data_, tip_frame_, tip_point(), J0_);
-  s.Jv = J0_.topRows<3>();
-  s.dx.noalias() = s.Jv * s.dq;
+  observe_joints(model_, data_, t, q, dq, s);
+  observe_tip(model_, data_, tip_frame_, tip_point(), J0_, s);
   operational_space(s.A, s.Jv, s.g, task_);
   s.Lambda_v = task_.Lambda;
   s.Jbar_v = task_.Jbar;

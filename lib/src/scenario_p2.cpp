@@ -9,6 +9,7 @@
 #include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation.hpp"
 #include "opspace/urdf.hpp"
+#include "observe.hpp"
 
 namespace opspace::scenarios::p2 {
 
@@ -121,23 +122,14 @@ hw2::p2::Goal goal(double t) {
 }
 
 Observer::Observer(const Model& iiwa)
-    : model_(iiwa), data_(iiwa), task_(6, iiwa.dof()), J0_(6, iiwa.dof()), tip_frame_(iiwa.frame_id(kTipLink)) {
-  if (iiwa.dof() != 7) {
-    throw std::invalid_argument("p2::Observer: " + iiwa.source + " has " + std::to_string(iiwa.dof()) +
-                                " joints; problem 2 needs the 7-joint iiwa");
-  }
-}
+    : model_(require_dof(iiwa, 7, "p2::Observer", "problem 2 needs the 7-joint iiwa")),
+      data_(iiwa), task_(6, iiwa.dof()), J0_(6, iiwa.dof()), tip_frame_(iiwa.frame_id(kTipLink)) {}
 
 const hw2::p2::State& Observer::observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                                         const Eigen::Ref<const Eigen::VectorXd>& dq,
                                         const Eigen::Ref<const Eigen::Vector4d>& lambda_side) {
   hw2::p2::State& s = state_;
-  s.t = t;
-  s.q = q;
-  s.dq = dq;
-  mass_matrix_and_gravity(model_, data_, q);  // also the forward kinematics of q, used below
-  s.A = data_.A;
-  s.g = data_.g;
+  observe_joints(model_, data_, t, q, dq, s);  // also the forward kinematics of q, used below
   const Eigen::Isometry3d pose = frame_pose(model_, data_, tip_frame_);
   s.x_p = pose.translation();
   s.lambda = same_side(euler_parameters(pose.linear()), lambda_side);

@@ -7,6 +7,7 @@
 #include "opspace/simulation.hpp"
 #include "opspace/singularity.hpp"
 #include "opspace/urdf.hpp"
+#include "observe.hpp"
 
 namespace opspace::scenarios::p4 {
 
@@ -111,27 +112,15 @@ hw2::p4::Goal goal(Target target) {
 }
 
 Observer::Observer(const Model& rrr)
-    : model_(rrr), data_(rrr), robust_(3, rrr.dof()), exact_(3, rrr.dof()), J0_(6, rrr.dof()),
-      tip_frame_(rrr.frame_id(kTipLink)) {
-  if (rrr.dof() != 3) {
-    throw std::invalid_argument("p4::Observer: " + rrr.source + " has " + std::to_string(rrr.dof()) +
-                                " joints; problem 4 needs the 3R elbow arm");
-  }
-}
+    : model_(require_dof(rrr, 3, "p4::Observer", "problem 4 needs the 3R elbow arm")),
+      data_(rrr), robust_(3, rrr.dof()), exact_(3, rrr.dof()), J0_(6, rrr.dof()),
+      tip_frame_(rrr.frame_id(kTipLink)) {}
 
 const hw2::p4::State& Observer::observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                                         const Eigen::Ref<const Eigen::VectorXd>& dq) {
   hw2::p4::State& s = state_;
-  s.t = t;
-  s.q = q;
-  s.dq = dq;
-  mass_matrix_and_gravity(model_, data_, q);  // also the forward kinematics of q, used below
-  s.A = data_.A;
-  s.g = data_.g;
-  s.x = point_position(model_, data_, tip_frame_, tip_point());
-  point_jacobian(model_, data_, tip_frame_, tip_point(), J0_);
-  s.Jv = J0_.topRows<3>();
-  s.dx.noalias() = s.Jv * s.dq;
+  observe_joints(model_, data_, t, q, dq, s);
+  observe_tip(model_, data_, tip_frame_, tip_point(), J0_, s);
   operational_space(s.A, s.Jv, s.g, robust_, kRobustTolerance);
   s.Lambda_v = robust_.Lambda;
   s.Jbar_v = robust_.Jbar;

@@ -126,3 +126,17 @@ TEST_CASE("the observer's lambda changes at the rate E_r(lambda) w of its angula
     CHECK((s.J0 * s.Jbar0 - Eigen::Matrix<double, 6, 6>::Identity()).norm() < 1e-9);
   }
 }
+
+TEST_CASE("each problem's Observer refuses a robot with another number of joints, naming it") {
+  // The observers size their fixed-size States for one robot; a wrong URDF must be named, not
+  // read out of bounds.
+  const Model rrr = load_urdf(robot_path("rrr.urdf"));
+  const Model iiwa = load_urdf(robot_path("iiwa7.urdf"));
+  CHECK_THROWS_WITH_AS(p2::Observer{rrr}, doctest::Contains("rrr.urdf has 3 joints; problem 2 needs the 7-joint iiwa"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(scenarios::p1b::Observer{iiwa},
+                       doctest::Contains("iiwa7.urdf has 7 joints; problem 1b needs the 6-joint PUMA"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(scenarios::p4::Observer{iiwa}, doctest::Contains("has 7 joints; problem 4 needs the 3R elbow arm"),
+                       std::invalid_argument);
+}

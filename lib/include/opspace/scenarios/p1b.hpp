@@ -39,7 +39,8 @@ hw2::p1b::Goal goal(double t, const Eigen::Ref<const Vector6d>& q);
 /// operational-space matrices of the tip task. Allocates nothing per call.
 class Observer {
  public:
-  /// Workspaces sized for `puma` (which must outlive the Observer and have 6 joints).
+  /// Workspaces sized for `puma`, which must outlive the Observer. Throws std::invalid_argument
+  /// unless it has 6 joints, std::out_of_range unless it has the tip link.
   explicit Observer(const Model& puma);
   /// The State at time t: tip x, dx, Jv, A, g, Lambda_v, Jbar_v, p at (q, dq).
   const hw2::p1b::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,

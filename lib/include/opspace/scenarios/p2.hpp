@@ -48,7 +48,8 @@ hw2::p2::Goal goal(double t);
 /// nothing per call.
 class Observer {
  public:
-  /// Workspaces sized for `iiwa` (which must outlive the Observer and have 7 joints).
+  /// Workspaces sized for `iiwa`, which must outlive the Observer. Throws std::invalid_argument
+  /// unless it has 7 joints, std::out_of_range unless it has link7.
   explicit Observer(const Model& iiwa);
   /// The measured lambda is returned on the side of `lambda_side` (normally lambda_d(t)).
   const hw2::p2::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,

@@ -53,7 +53,8 @@ hw2::p4::Goal goal(Target target);
 /// allocates nothing per call (tests/lib/test_tick_noalloc.cpp).
 class Observer {
  public:
-  /// Workspaces sized for `rrr` (which must outlive the Observer).
+  /// Workspaces sized for `rrr`, which must outlive the Observer. Throws std::invalid_argument
+  /// unless it has 3 joints, std::out_of_range unless it has the tip link.
   explicit Observer(const Model& rrr);
   /// The State at time t at (q, dq), with the robust task quantities (kRobustTolerance).
   const hw2::p4::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
