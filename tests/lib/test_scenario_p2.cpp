@@ -1,6 +1,6 @@
 // Problem 2's scenario (scenarios/p2.hpp): the desired trajectory against the problem set's
 // formulas and finite differences, the start pose against robots.md, the Observer against
-// its definitions.
+// its definitions, and the Observers' refusal of a robot with another number of joints.
 #include <doctest/doctest.h>
 
 #include <cmath>
