@@ -20,10 +20,11 @@ Index checked(Index value, Index max, const char* what) {
   return value;
 }
 
-// The kernels below are plain loops over matrices whose sizes are template parameters: for the
-// task shapes of the course (6 x 7, 3 x 6, 3 x 3) the compiler unrolls and vectorises them,
-// where Eigen's general-purpose factorisations and products, built for large matrices, spent
-// most of their time in size dispatch (callgrind, docs/performance.md).
+// The kernels below work on matrices whose sizes are template parameters: the factorisations
+// are plain loops, the products Eigen's coefficient-based lazy products. For the task shapes
+// of the course (6 x 7, 3 x 6, 3 x 3) the compiler unrolls and vectorises both, where Eigen's
+// general-purpose LLT and blocked products, built for large matrices, spent most of their time
+// in size dispatch (callgrind, docs/performance.md).
 
 /// A = L L^T: L overwrites the lower triangle of `L` (which holds A on entry; the strict upper
 /// triangle is not read). False if A is not positive definite (or holds a NaN).
