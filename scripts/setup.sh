@@ -9,10 +9,13 @@ OPSPACE_BUILD="$OPSPACE_ROOT/build/release"
 OPSPACE_PACKAGES=(g++ make cmake pkg-config libeigen3-dev doctest-dev libbullet-dev
                   liburdfdom-dev libbenchmark-dev)
 # The pictures of a run (docs/visuals.md): gnuplot draws the plots (fonts for its PNGs), node
-# and npm bundle the 3D replay viewer at build time, Chromium runs the replay test.
+# and npm bundle the 3D replay viewer at build time (npm fetches over TLS: ca-certificates).
 # Optional: if they cannot be installed, the build, the grader and the programs still work and
 # say which picture they skipped.
-OPSPACE_OPTIONAL_PACKAGES=(gnuplot-nox fonts-dejavu-core chromium ca-certificates)
+OPSPACE_OPTIONAL_PACKAGES=(gnuplot-nox fonts-dejavu-core ca-certificates)
+# Only the tests need a browser: Chromium runs the replay test (scripts/test installs it; a
+# student's scripts/grade does not download it). Optional too: without it that test is skipped.
+OPSPACE_TEST_PACKAGES=(chromium)
 # A node/npm already on the machine (for example from NodeSource) is kept: Debian's npm
 # package would conflict with it.
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
@@ -29,18 +32,25 @@ opspace_missing() {
   done
 }
 
+# opspace_install_packages [--tests]: the required packages, the optional ones, and with
+# --tests those only the tests need.
 opspace_install_packages() {
+  local wanted=("${OPSPACE_OPTIONAL_PACKAGES[@]}")
+  [ "${1:-}" = --tests ] && wanted+=("${OPSPACE_TEST_PACKAGES[@]}")
   if ! command -v dpkg-query >/dev/null 2>&1; then
     opspace_say "not a Debian system: install these packages' equivalents yourself: ${OPSPACE_PACKAGES[*]}"
-    opspace_say "and, for plots and the 3D replay: ${OPSPACE_OPTIONAL_PACKAGES[*]}"
+    opspace_say "and, for plots and the 3D replay: ${wanted[*]}"
     return 0
   fi
   local missing optional
   mapfile -t missing < <(opspace_missing "${OPSPACE_PACKAGES[@]}")
-  mapfile -t optional < <(opspace_missing "${OPSPACE_OPTIONAL_PACKAGES[@]}")
-  # Optional packages that could not be installed once are not retried on every command.
+  mapfile -t optional < <(opspace_missing "${wanted[@]}")
+  # Optional packages that could not be installed once (listed in this file) are not retried
+  # on every command.
   local optional_failed="$OPSPACE_ROOT/build/optional-packages-failed"
-  [ -f "$optional_failed" ] && optional=()
+  if [ -f "$optional_failed" ] && [ ${#optional[@]} -gt 0 ]; then
+    mapfile -t optional < <(printf '%s\n' "${optional[@]}" | grep -vxF -f "$optional_failed" || true)
+  fi
   [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
 
   local as_root=()
@@ -65,10 +75,16 @@ opspace_install_packages() {
   fi
   if [ ${#optional[@]} -gt 0 ]; then
     opspace_say "installing Debian packages for plots and the 3D replay: ${optional[*]}"
-    if ! "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${optional[@]}"; then
-      opspace_say "could not install ${optional[*]}: the programs will skip the pictures they cannot make (docs/visuals.md)"
-      opspace_say "(not retried; delete $optional_failed to try again)"
-      mkdir -p "$(dirname "$optional_failed")" && : > "$optional_failed"
+    local apt_install=("${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends)
+    if ! "${apt_install[@]}" "${optional[@]}"; then
+      # apt-get installs all or nothing: one at a time, so that one failure costs only itself.
+      local p failed=()
+      for p in "${optional[@]}"; do "${apt_install[@]}" "$p" || failed+=("$p"); done
+      if [ ${#failed[@]} -gt 0 ]; then
+        opspace_say "could not install ${failed[*]}: the programs skip the pictures, and the tests the checks, that need them (docs/visuals.md)"
+        opspace_say "(not retried; delete $optional_failed to try again)"
+        mkdir -p "$(dirname "$optional_failed")" && printf '%s\n' "${failed[@]}" >> "$optional_failed"
+      fi
     fi
   fi
 }
@@ -86,7 +102,8 @@ opspace_build() {
   cmake --build "$OPSPACE_BUILD" --parallel "$(nproc)" "$@"
 }
 
+# opspace_setup [--tests]: packages (see opspace_install_packages), then configure.
 opspace_setup() {
-  opspace_install_packages
+  opspace_install_packages "$@"
   opspace_configure
 }
