@@ -4,6 +4,9 @@
 // solutions/.)
 #include <doctest/doctest.h>
 
+#include <utility>
+
+#include "opspace/opspace.hpp"
 #include "opspace/scenarios.hpp"
 #include "opspace/urdf.hpp"
 #include "support/count_allocations.hpp"
@@ -81,4 +84,25 @@ TEST_CASE("a problem-4 control tick allocates nothing once its workspaces exist"
     CHECK_MESSAGE(n == 0, "one tick allocated ", n, " times");
   }
   CHECK(sink.allFinite());
+}
+
+TEST_CASE("operational_space allocates nothing at any size, on either inversion path") {
+  // The ticks above run the kernels compiled for their shapes and, away from singularities,
+  // the Cholesky path. Other shapes run the same code with run-time sizes, and a singular
+  // task the eigen-decomposition: neither may reach for the heap.
+  for (const auto& [m, n] : {std::pair<int, int>{2, 7}, {6, 12}, {3, 6}}) {
+    CAPTURE(m);
+    CAPTURE(n);
+    const Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n) * 2.0;
+    Eigen::MatrixXd J = Eigen::MatrixXd::Identity(m, n);
+    const Eigen::VectorXd g = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+    opspace::TaskSpace task(m, n);
+    const long regular = allocations_in([&] { opspace::operational_space(A, J, g, task); });
+    CHECK(task.rank == m);
+    CHECK_MESSAGE(regular == 0, "operational_space allocated ", regular, " times on the Cholesky path");
+    J.row(m - 1) = J.row(0);  // two equal rows: J A^-1 J^T is singular
+    const long singular = allocations_in([&] { opspace::operational_space(A, J, g, task); });
+    CHECK(task.rank == m - 1);  // the eigen path ran: one direction dropped
+    CHECK_MESSAGE(singular == 0, "operational_space allocated ", singular, " times on the eigen path");
+  }
 }
