@@ -12,6 +12,7 @@
 
 namespace opspace::grading {
 
+/// What hw2-grade's command line sets (docs/grader.md).
 struct GraderOptions {
   std::string only_problem;         ///< empty: every problem
   double timeout = 60.0;            ///< seconds per problem

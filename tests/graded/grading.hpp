@@ -37,8 +37,8 @@ class Check {
   /// Caps the test's credit at `fraction` (partial credit for a measured quantity).
   void credit_at_most(double fraction, const std::string& message);
 
-  double fraction() const { return fraction_; }
-  const std::vector<std::string>& findings() const { return findings_; }
+  double fraction() const { return fraction_; }  ///< share of the points earned, 0 to 1
+  const std::vector<std::string>& findings() const { return findings_; }  ///< what failed, in order
 
  private:
   void fail(const std::string& message);
@@ -49,15 +49,15 @@ class Check {
 /// One graded test of a problem.
 struct GradedTest {
   std::string name;     ///< what a passing implementation does, as a sentence
-  double points = 0.0;
+  double points = 0.0;  ///< what a passing implementation earns
   std::string hint;     ///< how to think about a failure
-  std::function<void(const Hw2Api&, Check&)> body;
+  std::function<void(const Hw2Api&, Check&)> body;  ///< runs the checks on the functions of the api
 };
 
 /// What one graded test earned.
 struct TestResult {
-  const GradedTest* test = nullptr;
-  double score = 0.0;
+  const GradedTest* test = nullptr;  ///< the test, owned by its Problem
+  double score = 0.0;                ///< points earned: Check::fraction() times the test's points
   std::vector<std::string> findings;  ///< failed checks, or what the student code threw
 };
 

@@ -12,10 +12,10 @@ namespace opspace::grading {
 
 /// The results of one problem's tests, with the points earned and available.
 struct ProblemResult {
-  const Problem* problem = nullptr;
-  std::vector<TestResult> results;
-  double score = 0.0;
-  double max_score = 0.0;
+  const Problem* problem = nullptr;  ///< the problem graded
+  std::vector<TestResult> results;   ///< one per test, in the problem's order
+  double score = 0.0;                ///< sum of the results' scores
+  double max_score = 0.0;            ///< sum of the tests' points
   std::string failure;  ///< empty, or how the problem's process ended early (crash, time-out)
 };
 

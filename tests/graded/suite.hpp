@@ -11,9 +11,9 @@ namespace opspace::grading {
 
 /// A problem of the set: its key ("1a"), its title, and its graded tests.
 struct Problem {
-  std::string key;
-  std::string title;
-  std::vector<GradedTest> tests;
+  std::string key;                ///< "1a", "1b", "2", "3" or "4" (hw2-grade --problem KEY)
+  std::string title;              ///< printed over its tests
+  std::vector<GradedTest> tests;  ///< in the order they are run and reported
 };
 
 /// Problem 1a: weighted instantaneous inverse kinematics of the PP robot (p1a.cpp).

@@ -7,8 +7,10 @@
 #   check_visuals.sh plots-p4   PROGRAM WORKDIR             the same for hw2-p4 (both directions)
 #   check_visuals.sh no-gnuplot PROGRAM WORKDIR             without gnuplot: a note, exit 0, data kept
 #   check_visuals.sh compare    PROGRAM WORKDIR             hw2-p1 compare draws the drift overlay
-#   check_visuals.sh replay     PROGRAM WORKDIR NODE CHECK_SCRIPT SCREENSHOT
-#                                                           the page in headless Chromium
+#   check_visuals.sh replay     PROGRAM WORKDIR NODE CHECK_SCRIPT SCREENSHOT MIN_ROBOT_SHARE ARG...
+#                               runs PROGRAM ARG... in WORKDIR; the one page it prints on its
+#                               'replay:' line must pass CHECK_SCRIPT (web/test/check_replay.mjs)
+#                               in headless Chromium, the robot covering > MIN_ROBOT_SHARE of it
 # Exit 77 (ctest: skipped) when gnuplot, node, the viewer bundle or Chromium is missing,
 # unless CI is set: CI installs them (scripts/setup.sh), so there a missing tool fails.
 set -uo pipefail
@@ -105,18 +107,24 @@ case "$mode" in
     [ -s run/cmp-part2.csv ] && [ -s run/cmp-part3.csv ] || fail "the two logs were not written"
     ;;
   replay)
-    node=$4 check=$5 screenshot=$6
+    [ $# -ge 7 ] || fail "replay needs NODE CHECK_SCRIPT SCREENSHOT MIN_ROBOT_SHARE and the program's arguments"
+    node=$4 check=$5 screenshot=$6 share=$7
+    shift 7
     [ -x "$node" ] || skip "node is not installed: the replay viewer cannot be bundled or checked"
     [ -x "${CHROMIUM:-/usr/bin/chromium}" ] || skip "Chromium is not installed (apt-get install chromium)"
-    # 4 s at 50 frames/s: 200 frames, enough motion of joint 2 to see.
-    run "$program 3" 3 --duration 4 --csv run/p3.csv --no-plots
-    if grep -q '^note: no 3D replay' "$work/out.txt"; then skip "the viewer bundle was not built (see the note above)"; fi
-    page=$(sed -n 's/^replay: *//p' "$work/out.txt")
-    [ -n "$page" ] || fail "no 'replay:' line printed"
-    [ -s "$work/$page" ] || fail "$page was printed but is missing or empty"
+    # The durations are chosen per program in tests/vis/CMakeLists.txt (short, but the arm
+    # moves); --no-plots: this test is about the page.
+    run "$program $*" "$@" --no-plots
+    if grep -q '^note: *no 3D replay' "$work/out.txt"; then skip "the viewer bundle was not built (see the note above)"; fi
+    mapfile -t pages < <(sed -n 's/^replay: *//p' "$work/out.txt")
+    [ ${#pages[@]} -gt 0 ] || fail "no 'replay:' line printed"
+    [ ${#pages[@]} -eq 1 ] || fail "expected one 'replay:' line, got ${#pages[@]}: ${pages[*]}"
+    page=${pages[0]}
+    case "$page" in /*) ;; *) page=$work/$page ;; esac  # printed relative to the program's directory
+    [ -s "$page" ] || fail "$page was printed but is missing or empty"
     [ -f "$check" ] || skip "$check is missing: the viewer's npm packages were not installed"
     mkdir -p "$(dirname "$screenshot")"
-    "$node" "$check" "$work/$page" "$screenshot"
+    "$node" "$check" "$page" "$screenshot" "$share"
     status=$?
     [ $status -eq 77 ] && skip "Chromium could not be started"
     [ $status -eq 0 ] || fail "the replay page failed in headless Chromium"

@@ -209,13 +209,20 @@ function main() {
   }
   const updates = data.markers.map((m) => buildMarker(scene, m));
 
-  // Frame the motion: the box around every body origin over the run.
+  // Frame the motion: the box around every body origin over the run, and around the points,
+  // trails and arrow origins, which show the tip (a body origin can be far from its link's
+  // end: the 3R arm's forearm reaches 0.5 m past it).
   const box = new THREE.Box3();
-  for (let f = 0; f < n; f += Math.max(1, Math.floor(n / 100))) {
+  const step = Math.max(1, Math.floor(n / 100));
+  for (let f = 0; f < n; f += step) {
     for (let i = 0; i < data.bodies; ++i) {
       const p = data.poses[f];
       box.expandByPoint(new THREE.Vector3(p[7 * i], p[7 * i + 1], p[7 * i + 2]));
     }
+  }
+  for (const m of data.markers) {
+    if (!['point', 'trail', 'arrow'].includes(m.kind)) continue;
+    for (let f = 0; f < m.positions.length; f += step) box.expandByPoint(vectorAt(m.positions, f));
   }
   box.expandByPoint(new THREE.Vector3(0, 0, 0));
   const center = box.getCenter(new THREE.Vector3());

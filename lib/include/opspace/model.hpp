@@ -19,7 +19,7 @@ enum class JointType { kRevolute, kPrismatic };
 
 /// Mass properties of a rigid body, expressed in its body frame.
 struct Inertia {
-  double mass = 0.0;
+  double mass = 0.0;  ///< mass (kg)
   Eigen::Vector3d com = Eigen::Vector3d::Zero();      ///< centre of mass, body frame
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< rotational inertia about the COM
 };
@@ -27,7 +27,7 @@ struct Inertia {
 /// A geometric primitive attached to a body (a URDF collision or visual element).
 struct Shape {
   enum class Kind { kBox, kCylinder, kSphere };
-  Kind kind = Kind::kBox;
+  Kind kind = Kind::kBox;  ///< which primitive: the members below that apply to it are set
   Eigen::Vector3d box_size = Eigen::Vector3d::Zero();  ///< box: full edge lengths
   double radius = 0.0;                                 ///< cylinder and sphere
   double length = 0.0;                                 ///< cylinder, along its local z
@@ -38,23 +38,24 @@ struct Shape {
 
 /// One moving joint and the rigid body it carries.
 struct Body {
-  std::string joint_name;
-  std::string link_name;
-  JointType type = JointType::kRevolute;
+  std::string joint_name;  ///< URDF name of the joint
+  std::string link_name;   ///< URDF name of the child link the joint moves
+  JointType type = JointType::kRevolute;  ///< revolute (q in rad) or prismatic (q in m)
   int parent = -1;  ///< index of the parent body, -1 for the fixed base
   /// Joint frame in the parent body frame at q = 0 (URDF joint origin, composed with any
   /// fixed joints between the two moving bodies).
   Eigen::Isometry3d joint_placement = Eigen::Isometry3d::Identity();
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< unit joint axis, body frame
   Inertia inertia;  ///< includes the links merged in through fixed joints
-  double lower = 0.0, upper = 0.0;  ///< position limits (rad or m)
+  double lower = 0.0;               ///< lower position limit (rad or m)
+  double upper = 0.0;               ///< upper position limit (rad or m)
   double effort = 0.0;              ///< torque/force limit (N m or N)
   double velocity = 0.0;            ///< speed limit (rad/s or m/s)
 };
 
 /// Every URDF link by name, moving or merged, so that a tool frame can serve as a tip.
 struct Frame {
-  std::string name;
+  std::string name;  ///< URDF link name
   int body = -1;  ///< -1: attached to the fixed base
   Eigen::Isometry3d placement = Eigen::Isometry3d::Identity();  ///< frame in body frame
 };
@@ -63,10 +64,10 @@ struct Frame {
 struct Model {
   std::string name;    ///< URDF robot name
   std::string source;  ///< file (or label) the model was read from, for error messages
-  std::vector<Body> bodies;
-  std::vector<Frame> frames;
-  std::vector<Shape> collisions;
-  std::vector<Shape> visuals;
+  std::vector<Body> bodies;       ///< moving bodies, parents before children; index = joint index
+  std::vector<Frame> frames;      ///< every URDF link, by frame_id()
+  std::vector<Shape> collisions;  ///< URDF `<collision>` shapes (the simulation's contact geometry)
+  std::vector<Shape> visuals;     ///< URDF `<visual>` shapes (drawn by the replay page)
   Inertia base_inertia;  ///< of the fixed root link (plays no part in the dynamics)
   Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81);  ///< base frame, m/s^2
 
@@ -93,9 +94,13 @@ struct Data {
   Eigen::VectorXd qdd;      ///< forward dynamics A^-1 (tau - b - g)     (forward_dynamics)
   Eigen::LLT<Eigen::MatrixXd> A_llt;  ///< Cholesky factor of A, kept by forward_dynamics
 
-  // Recursion workspace, one entry per body (spatial quantities in the base frame).
-  std::vector<Eigen::Matrix<double, 6, 1>> v, a, f, S;
-  std::vector<Eigen::Matrix<double, 6, 6>> Ic;
+  // Recursion workspace, one entry per body (spatial quantities in the base frame, about its
+  // origin O: motion [v_O; w], force [f; n_O]).
+  std::vector<Eigen::Matrix<double, 6, 1>> v;  ///< spatial velocity [v_O; w] (m/s, rad/s)
+  std::vector<Eigen::Matrix<double, 6, 1>> a;  ///< spatial acceleration (rnea: offset by -gravity)
+  std::vector<Eigen::Matrix<double, 6, 1>> f;  ///< spatial force [f; n_O] (N, N m) across the joint (rnea)
+  std::vector<Eigen::Matrix<double, 6, 1>> S;  ///< joint motion subspace: spatial velocity per unit qdot
+  std::vector<Eigen::Matrix<double, 6, 6>> Ic; ///< composite spatial inertia of the body's subtree (crba)
 };
 
 }  // namespace opspace

@@ -16,24 +16,25 @@ enum class Line { kSolid, kDashed };
 /// One curve y(x).
 struct Series {
   std::string title;  ///< legend entry
-  std::vector<double> x, y;
-  Line line = Line::kSolid;
+  std::vector<double> x;     ///< abscissae, in the figure's xlabel unit
+  std::vector<double> y;     ///< ordinates, one per x, in the panel's ylabel unit
+  Line line = Line::kSolid;  ///< solid or dashed (e.g. a desired value)
   std::string color;  ///< "#rrggbb", or empty for gnuplot's sequence
 };
 
 /// A horizontal reference line across a panel: a limit, a set point.
 struct Level {
-  std::string title;
-  double y = 0.0;
-  std::string color = "#c0392b";
+  std::string title;              ///< legend entry
+  double y = 0.0;                 ///< where it is drawn, in the panel's ylabel unit
+  std::string color = "#c0392b";  ///< "#rrggbb"; drawn dotted
 };
 
 /// One set of axes.
 struct Panel {
-  std::string title;
-  std::string ylabel;
-  std::vector<Series> series;
-  std::vector<Level> levels;
+  std::string title;           ///< over the panel
+  std::string ylabel;          ///< y axis label, with its unit
+  std::vector<Series> series;  ///< curves, in legend order
+  std::vector<Level> levels;   ///< horizontal lines, after the curves
   bool log_y = false;  ///< logarithmic y axis (values <= 0 are not drawn)
 
   /// Adds a curve; returns it so that its colour can be set.
@@ -50,8 +51,8 @@ struct Figure {
 
   std::string name;   ///< file-name part: lower case, digits, '-'
   std::string title;  ///< over the whole picture
-  std::string xlabel = "t (s)";
-  std::vector<Panel> panels;
+  std::string xlabel = "t (s)";  ///< x axis label of every panel
+  std::vector<Panel> panels;     ///< row by row, `columns` per row
   int columns = 1;          ///< panels per row
   int width = 1100;         ///< pixels
   int row_height = 330;     ///< pixels per row of panels
@@ -69,7 +70,7 @@ struct Output {
 
 /// Settings of render().
 struct Options {
-  bool svg = true;
+  bool svg = true;  ///< also write an SVG next to each PNG
   /// A series longer than this is reduced to the minimum and maximum of equal buckets, so that
   /// spikes survive while the files stay small.
   std::size_t max_points = 4000;

@@ -20,9 +20,9 @@ using Track = std::vector<Eigen::Vector3d>;
 /// Something drawn besides the robot. Build one with the factory functions.
 struct Marker {
   enum class Kind { kPoint, kTrail, kArrow, kPlane };
-  Kind kind = Kind::kPoint;
+  Kind kind = Kind::kPoint;  ///< which of the members below apply (see each one)
   std::string label;  ///< legend entry; empty: not listed
-  std::string color = "#e74c3c";
+  std::string color = "#e74c3c";  ///< "#rrggbb"
   Track positions;    ///< point, trail: where; arrow: its origin
   Track vectors;      ///< arrow: the vector drawn (scaled by `scale`)
   double radius = 0.015;  ///< point (m)
@@ -44,19 +44,19 @@ struct Marker {
 
 /// A named number shown over the scene, one value per logged sample.
 struct Readout {
-  std::string label;
-  std::vector<double> values;
+  std::string label;           ///< shown before the value, with its unit, e.g. "F_x (N)"
+  std::vector<double> values;  ///< one per entry of Scene::t
 };
 
 /// Everything the page shows.
 struct Scene {
-  std::string title;
-  std::string subtitle;
+  std::string title;     ///< the page's title and heading
+  std::string subtitle;  ///< one line under the heading; empty: none
   Model model;                       ///< its visuals are drawn; its kinematics place them
   std::vector<double> t;             ///< logged times (s), increasing
   std::vector<Eigen::VectorXd> q;    ///< joint positions, one per entry of t
-  std::vector<Marker> markers;
-  std::vector<Readout> readouts;
+  std::vector<Marker> markers;       ///< drawn besides the robot, listed in the legend
+  std::vector<Readout> readouts;     ///< head-up numbers, after the time
   Eigen::Vector3d view = Eigen::Vector3d(1.0, -1.0, 0.7);  ///< camera direction from the scene
   double fps = 50.0;                 ///< frames kept per simulated second
 };

@@ -49,9 +49,10 @@ class SimulationError : public std::runtime_error {
 
 enum class Integrator { kRK4, kEuler };
 
+/// How a Simulation steps: time step, integrator, speed bound, contact solver.
 struct SimulationSettings {
   double dt = 1e-3;                      ///< step (s)
-  Integrator integrator = Integrator::kRK4;
+  Integrator integrator = Integrator::kRK4;  ///< Bullet's multibody integration scheme
   /// A step that ends with |qdot_i| above this (rad/s or m/s) throws SimulationError. No
   /// controlled arm moves this fast (a PUMA falling freely whips its light last link to about
   /// 120 rad/s); Bullet's own silent clamp is pushed far above it.
@@ -71,7 +72,7 @@ struct Contact {
   int body = -1;                       ///< index in Model::bodies
   int obstacle = -1;                   ///< id returned by add_plane / add_box
   Eigen::Vector3d position_on_body;    ///< world frame (m)
-  Eigen::Vector3d position_on_obstacle;
+  Eigen::Vector3d position_on_obstacle;  ///< world frame (m)
   Eigen::Vector3d normal;              ///< world, unit, pointing from the obstacle to the body
   double distance = 0.0;               ///< signed gap (m), negative when penetrating
   Eigen::Vector3d force;               ///< on the body, world frame (N): normal + friction
@@ -80,14 +81,14 @@ struct Contact {
 /// Contact force and moment on one body, world frame; the moment is about the body frame
 /// origin (the URDF link frame of Model::bodies[i]).
 struct Wrench {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   ///< sum of the contact forces (N)
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  ///< their moment about the body frame origin (N m)
 };
 
 /// What a run did, for the caller's report.
 struct SimulationSummary {
-  long steps = 0;
-  double time = 0.0;
+  long steps = 0;     ///< steps taken
+  double time = 0.0;  ///< simulated time reached, steps * dt (s)
   std::vector<long> clamped_steps;  ///< per joint: steps whose requested torque was clamped
   std::vector<double> max_requested_torque;  ///< per joint: max |tau| requested (N m or N)
   /// Sum of clamped_steps over the joints.

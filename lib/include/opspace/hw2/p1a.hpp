@@ -11,8 +11,8 @@ namespace opspace::hw2::p1a {
 
 /// Question i: degrees of freedom of the task and of the robot.
 struct DegreesOfFreedom {
-  int task = 0;
-  int robot = 0;
+  int task = 0;   ///< degrees of freedom of the task (x_ee: 1)
+  int robot = 0;  ///< degrees of freedom of the robot (d1, d2: 2)
   bool redundant = false;  ///< the robot has more degrees of freedom than the task needs
 };
 /// Question i: task DOF = 1 (x_ee), robot DOF = 2 (d1, d2).

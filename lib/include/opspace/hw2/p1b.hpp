@@ -26,8 +26,10 @@ enum class Part {
 /// PUMA's `end-effector` link.
 struct State {
   double t = 0.0;         ///< time (s)
-  Vector6d q, dq;         ///< joint positions (rad) and velocities (rad/s)
-  Eigen::Vector3d x, dx;  ///< tip position (m) and velocity (m/s)
+  Vector6d q;             ///< joint positions (rad)
+  Vector6d dq;            ///< joint velocities (rad/s)
+  Eigen::Vector3d x;      ///< tip position (m)
+  Eigen::Vector3d dx;     ///< tip velocity (m/s)
   Matrix36d Jv;           ///< tip linear-velocity Jacobian: dx = Jv dq
   Matrix6d A;             ///< joint-space mass matrix
   Vector6d g;             ///< gravity torques
@@ -40,7 +42,10 @@ struct State {
 struct Goal {
   Eigen::Vector3d x_d;  ///< desired tip position (m)
   Vector6d q_d;         ///< desired joint positions (rad); only q_d[1] differs from q
-  double kpx = 0, kvx = 0, kpj = 0, kvj = 0;
+  double kpx = 0;  ///< tip stiffness: acceleration per metre of x - x_d (1/s^2)
+  double kvx = 0;  ///< tip damping: acceleration per m/s of dx (1/s)
+  double kpj = 0;  ///< joint stiffness: acceleration per radian of q - q_d (1/s^2)
+  double kvj = 0;  ///< joint damping: acceleration per rad/s of dq (1/s)
 };
 
 /// The joint torques Gamma of control law `part`.

@@ -23,12 +23,14 @@ using Matrix76d = Eigen::Matrix<double, 7, 6>;
 /// is expressed in the base frame.
 struct State {
   double t = 0.0;            ///< time (s)
-  Vector7d q, dq;            ///< joint positions (rad) and velocities (rad/s)
+  Vector7d q;                ///< joint positions (rad)
+  Vector7d dq;               ///< joint velocities (rad/s)
   Eigen::Vector3d x_p;       ///< position of the operational point (origin of link7) (m)
   /// Euler parameters of link7, scalar first, unit, on the side of lambda_d
   /// (lambda . lambda_d >= 0: lambda and -lambda are the same orientation).
   Eigen::Vector4d lambda;
-  Eigen::Vector3d v, w;      ///< linear (m/s) and angular (rad/s) velocity: [v; w] = J0 dq
+  Eigen::Vector3d v;         ///< linear velocity of the operational point (m/s): [v; w] = J0 dq
+  Eigen::Vector3d w;         ///< angular velocity of link7 (rad/s)
   Matrix67d J0;              ///< basic Jacobian [Jv; Jw] of the operational point
   Matrix7d A;                ///< joint-space mass matrix
   Vector7d g;                ///< gravity torques
@@ -44,7 +46,9 @@ struct Goal {
   Vector7d x_d;      ///< [x_d, y_d, z_d, lambda_0d, lambda_1d, lambda_2d, lambda_3d]
   Vector7d xdot_d;   ///< its time derivative
   Vector7d xddot_d;  ///< its second time derivative
-  double kpx = 0, kvx = 0, kvj = 0;
+  double kpx = 0;  ///< task stiffness: acceleration per unit of [x_p error (m); delta phi (rad)] (1/s^2)
+  double kvx = 0;  ///< task damping: acceleration per unit of velocity error (1/s)
+  double kvj = 0;  ///< joint damping of the null-space motion: acceleration per rad/s of dq (1/s)
 };
 
 /// 2(a): xddot_d(t), the second time derivative of the desired trajectory x_d(t).

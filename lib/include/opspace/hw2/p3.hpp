@@ -35,7 +35,9 @@ struct Goal {
   /// F_0d = [F_x, F_y, F_z, M_x, M_y, M_z] in the base frame, applied feed-forward in the
   /// force-controlled directions: [10, 0, 0, 0, 0, 0] (N, N m) in the scenario.
   Vector6d F_d;
-  double kpx = 0, kvx = 0, kvj = 0;
+  double kpx = 0;  ///< task stiffness: acceleration per unit of [x_p error (m); delta phi (rad)] (1/s^2)
+  double kvx = 0;  ///< task damping: acceleration per unit of velocity error (1/s)
+  double kvj = 0;  ///< joint damping of the null-space motion: acceleration per rad/s of dq (1/s)
 };
 
 /// 3(a): Omega (6x6), the selection of the motion-controlled directions of [F; M]: linear y

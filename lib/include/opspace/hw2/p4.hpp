@@ -24,7 +24,8 @@ inline constexpr double kTurnedJoint1 = 1.5707963267948966;
 struct Kinematics {
   Eigen::Vector3d q;        ///< joint angles (rad)
   Eigen::Vector3d x;        ///< tip position (m)
-  Eigen::Matrix3d Jv, Jw;   ///< linear and angular Jacobians: v = Jv dq, w = Jw dq
+  Eigen::Matrix3d Jv;       ///< linear Jacobian of the tip: v = Jv dq
+  Eigen::Matrix3d Jw;       ///< angular Jacobian of the tip's link (end-effector): w = Jw dq
   /// Hessians of the tip coordinates: H[k](i, j) = d^2 x_k / dq_i dq_j (k = 0, 1, 2 for
   /// X0, Y0, Z0). The tip accelerates by xdd_k = Jv.row(k) qdd + dq^T H[k] dq.
   std::array<Eigen::Matrix3d, 3> H;
@@ -32,8 +33,8 @@ struct Kinematics {
 
 /// A set of orthonormal directions in {0}: the first `count` columns of `u`.
 struct Directions {
-  int count = 0;
-  Eigen::Matrix3d u = Eigen::Matrix3d::Zero();
+  int count = 0;                                ///< how many directions (0 to 3)
+  Eigen::Matrix3d u = Eigen::Matrix3d::Zero();  ///< unit directions in its first `count` columns
 };
 
 /// i. How many degrees of freedom the tip has for positioning: the rank of Jv.
@@ -62,8 +63,10 @@ enum class Target {
 /// What the controller knows at one tick, computed by the library from (q, dq).
 struct State {
   double t = 0.0;              ///< time (s)
-  Eigen::Vector3d q, dq;       ///< joint angles (rad) and velocities (rad/s)
-  Eigen::Vector3d x, dx;       ///< tip position (m) and velocity (m/s)
+  Eigen::Vector3d q;           ///< joint angles (rad)
+  Eigen::Vector3d dq;          ///< joint velocities (rad/s)
+  Eigen::Vector3d x;           ///< tip position (m)
+  Eigen::Vector3d dx;          ///< tip velocity (m/s)
   Eigen::Matrix3d Jv;          ///< tip Jacobian: dx = Jv dq
   Eigen::Matrix3d A;           ///< joint-space mass matrix
   Eigen::Vector3d g;           ///< gravity torques
@@ -80,7 +83,10 @@ struct State {
 /// The target and gains (values in scenarios/p4.hpp).
 struct Goal {
   Eigen::Vector3d x_d;  ///< desired tip position (m)
-  double kpx = 0, kvx = 0, kpj = 0, kvj = 0;
+  double kpx = 0;  ///< tip stiffness: acceleration per metre of x - x_d (1/s^2)
+  double kvx = 0;  ///< tip damping: acceleration per m/s of dx (1/s)
+  double kpj = 0;  ///< stiffness of the self-motion potential: acceleration per radian (1/s^2)
+  double kvj = 0;  ///< joint damping: acceleration per rad/s of dq (1/s)
 };
 
 /// v. The joint torques that move the tip to goal.x_d along the singular direction `target`.

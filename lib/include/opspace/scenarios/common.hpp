@@ -19,7 +19,7 @@ struct RunOptions {
 template <class Sample, class Summary>
 struct RunResult {
   std::vector<Sample> samples;  ///< one per 1 ms step
-  Summary summary;
+  Summary summary;              ///< what the run measured (the problem's Summary)
   std::string failure;          ///< empty, or what stopped the run early (NaN torque, ...)
 };
 

@@ -60,11 +60,11 @@ using Controller = Vector6d (*)(hw2::p1b::Part, const hw2::p1b::State&, const hw
 
 /// One simulated instant.
 struct Sample {
-  double t = 0.0;
+  double t = 0.0;                               ///< time (s)
   Eigen::Vector3d x = Eigen::Vector3d::Zero();  ///< tip position
-  Vector6d q = Vector6d::Zero();
-  double q2_desired = 0.0;
-  Vector6d tau = Vector6d::Zero();
+  Vector6d q = Vector6d::Zero();                ///< joint positions (rad)
+  double q2_desired = 0.0;                      ///< q2_d, the null-space goal of joint 2 (rad)
+  Vector6d tau = Vector6d::Zero();              ///< torques requested by the controller (N m)
 };
 
 /// What a run measured; errors are taken after kSettleTime.
@@ -74,7 +74,7 @@ struct Summary {
   double q2_error_max = 0.0;   ///< max |q2 - q2_d| (rad)
   double q2_error_rms = 0.0;   ///< RMS |q2 - q2_d| (rad)
   double peak_torque = 0.0;    ///< max |tau_i| requested over the run (N m)
-  int peak_torque_joint = 0;
+  int peak_torque_joint = 0;  ///< the joint of that maximum (0-based)
   long clamped_steps = 0;      ///< steps whose torque was clamped to an effort limit (any joint)
   double time_reached = 0.0;   ///< simulated time at the end (s)
 };

@@ -34,7 +34,9 @@ Vector7d initial_q();
 ///   x_d = 0, y_d = 0.5 + 0.1 cos(w t), z_d = 0.65 - 0.05 cos(2 w t), w = 2 pi / 5,
 ///   lambda_d = (1/sqrt2) (sin a, cos a, sin a, cos a), a = (pi/4) cos(w t).
 struct Reference {
-  Vector7d x, xdot, xddot;
+  Vector7d x;      ///< x_d(t) = [x_d, y_d, z_d, lambda_d] (m, unit Euler parameters)
+  Vector7d xdot;   ///< its first time derivative
+  Vector7d xddot;  ///< its second time derivative
 };
 /// x_d(t), its first and second time derivatives, in closed form.
 Reference desired(double t);
@@ -71,12 +73,12 @@ using DesiredAcceleration = Vector7d (*)(double);
 
 /// One simulated instant.
 struct Sample {
-  double t = 0.0;
+  double t = 0.0;                                       ///< time (s)
   Eigen::Vector3d x_p = Eigen::Vector3d::Zero();        ///< position of link7's origin
   Eigen::Vector4d lambda = Eigen::Vector4d::Zero();     ///< its Euler parameters (as observed)
   Vector7d x_d = Vector7d::Zero();                      ///< desired [position; lambda_d]
-  Vector7d q = Vector7d::Zero();
-  Vector7d tau = Vector7d::Zero();
+  Vector7d q = Vector7d::Zero();                        ///< joint positions (rad)
+  Vector7d tau = Vector7d::Zero();                      ///< torques requested by the controller (N m)
 };
 
 /// What a run measured; tracking errors are taken after kSettleTime.
@@ -98,7 +100,7 @@ struct Summary {
   double joint_drift_per_period = 0.0;
   int joint_drift_joint = 0;           ///< the joint where that maximum occurred
   double peak_torque = 0.0;            ///< max |tau_i| requested over the run (N m)
-  int peak_torque_joint = 0;
+  int peak_torque_joint = 0;  ///< the joint of that maximum (0-based)
   long clamped_steps = 0;              ///< joint-steps whose torque was clamped to an effort limit
   double time_reached = 0.0;           ///< simulated time at the end (s)
 };

@@ -47,7 +47,7 @@ using Controller = Vector7d (*)(const hw2::p3::State&, const hw2::p3::Goal&);
 
 /// One simulated instant. The contact values are those of the step that led to it.
 struct Sample {
-  double t = 0.0;
+  double t = 0.0;                                    ///< time (s)
   Eigen::Vector3d x_p = Eigen::Vector3d::Zero();     ///< position of link7's origin
   Eigen::Vector4d lambda = Eigen::Vector4d::Zero();  ///< its Euler parameters (as observed)
   Vector7d x_d = Vector7d::Zero();                   ///< desired [position; lambda_d]
@@ -58,8 +58,8 @@ struct Sample {
   int contact_points = 0;  ///< contact points between link7 and the plane
   double tilt = 0.0;       ///< angle between link7's z axis and +x (rad): 0 when flat on the plane
   double rotation_x_error = 0.0;  ///< rotation about x of the orientation error, delta_phi_x (rad)
-  Vector7d q = Vector7d::Zero();
-  Vector7d tau = Vector7d::Zero();
+  Vector7d q = Vector7d::Zero();    ///< joint positions (rad)
+  Vector7d tau = Vector7d::Zero();  ///< torques requested by the controller (N m)
 };
 
 /// What a run measured; errors are taken after kSettleTime.
@@ -83,9 +83,10 @@ struct Summary {
   double rotation_x_error_max = 0.0;  ///< max of the same (rad)
   double tilt_max = 0.0;             ///< max tilt of the tool against the plane after kSettleTime (rad)
   double tilt_rms = 0.0;             ///< RMS of the same (rad)
-  double x_min = 0.0, x_max = 0.0;   ///< range of link7's origin along x after kSettleTime (m)
+  double x_min = 0.0;                ///< smallest x of link7's origin after kSettleTime (m)
+  double x_max = 0.0;                ///< largest x of link7's origin after kSettleTime (m)
   double peak_torque = 0.0;          ///< max |tau_i| requested over the run (N m)
-  int peak_torque_joint = 0;
+  int peak_torque_joint = 0;  ///< the joint of that maximum (0-based)
   long clamped_steps = 0;            ///< joint-steps whose torque was clamped to an effort limit
   double time_reached = 0.0;         ///< simulated time at the end (s)
 };

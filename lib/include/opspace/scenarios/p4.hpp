@@ -80,9 +80,9 @@ using Controller = Eigen::Vector3d (*)(Target, const hw2::p4::State&, const hw2:
 
 /// One simulated instant.
 struct Sample {
-  double t = 0.0;
+  double t = 0.0;                                 ///< time (s)
   Eigen::Vector3d x = Eigen::Vector3d::Zero();    ///< tip position
-  Eigen::Vector3d q = Eigen::Vector3d::Zero();
+  Eigen::Vector3d q = Eigen::Vector3d::Zero();    ///< joint angles (rad)
   Eigen::Vector3d tau = Eigen::Vector3d::Zero();  ///< requested torques
 };
 
@@ -91,7 +91,7 @@ struct Summary {
   double final_error = 0.0;   ///< |x - x_d| at the end (m)
   double reach_time = -1.0;   ///< from when on |x - x_d| <= kReachTolerance (s); -1: never
   double peak_torque = 0.0;   ///< max |tau_i| requested over the run (N m)
-  int peak_torque_joint = 0;
+  int peak_torque_joint = 0;  ///< the joint of that maximum (0-based)
   long clamped_steps = 0;     ///< joint-steps whose torque was clamped to the effort limit
   double time_reached = 0.0;  ///< simulated time at the end (s)
 };
