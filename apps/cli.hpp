@@ -53,6 +53,21 @@ void publish(const Options& options, const std::string& prefix,
              const std::function<std::vector<opspace::plot::Figure>()>& figures,
              const std::function<opspace::replay::Scene()>& scene);
 
+/// The end of a program that made one run: its plots and replay page named after `prefix`
+/// (drawn after the run, so drawing never slows the control loop; a note instead when the run
+/// logged no sample), then the exit code: 0 if the run reached its end, 1 if it stopped early.
+template <class Result>
+int finish(const Options& options, const std::string& prefix, const Result& result,
+           const std::function<std::vector<opspace::plot::Figure>()>& figures,
+           const std::function<opspace::replay::Scene()>& scene) {
+  if (result.samples.empty()) {
+    std::cout << "note:   no plots or replay: the run logged no sample\n";
+    return 1;
+  }
+  publish(options, prefix, figures, scene);
+  return result.failure.empty() ? 0 : 1;
+}
+
 /// Returns body(); an exception instead prints "program: what" on stderr and returns 1.
 int guarded(const char* program, const std::function<int()>& body);
 

@@ -95,14 +95,8 @@ int main(int argc, char** argv) {
   return cli::guarded(argv[0], [&] {
     const p1b::Result result = p1b::run(part, &opspace::hw2::p1b::control, options.run);
     print_summary(result, options.run.csv_path);
-    // After the run: drawing never slows the control loop.
-    if (result.samples.empty()) {
-      std::cout << "note:   no plots or replay: the run logged no sample\n";
-      return 1;
-    }
-    cli::publish(
-        options, prefix, [&] { return p1b::figures(result, part); },
+    return cli::finish(
+        options, prefix, result, [&] { return p1b::figures(result, part); },
         [&] { return p1b::replay_scene(result, part); });
-    return result.failure.empty() ? 0 : 1;
   });
 }

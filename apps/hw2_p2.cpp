@@ -57,12 +57,8 @@ int main(int argc, char** argv) {
     const p2::Result result =
         p2::run(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration, options.run);
     print_summary(result, options.run.csv_path);
-    // After the run: drawing never slows the control loop.
-    if (!result.samples.empty()) {
-      cli::publish(
-          options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p2::figures(result); },
-          [&] { return p2::replay_scene(result); });
-    }
-    return result.failure.empty() ? 0 : 1;
+    return cli::finish(
+        options, opspace::visuals::prefix_of(options.run.csv_path), result, [&] { return p2::figures(result); },
+        [&] { return p2::replay_scene(result); });
   });
 }

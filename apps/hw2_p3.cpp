@@ -67,12 +67,8 @@ int main(int argc, char** argv) {
   return cli::guarded(argv[0], [&] {
     const p3::Result result = p3::run(&opspace::hw2::p3::control, options.run);
     print_summary(result, options.run.csv_path);
-    // After the run: drawing never slows the control loop.
-    if (!result.samples.empty()) {
-      cli::publish(
-          options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p3::figures(result); },
-          [&] { return p3::replay_scene(result); });
-    }
-    return result.failure.empty() ? 0 : 1;
+    return cli::finish(
+        options, opspace::visuals::prefix_of(options.run.csv_path), result, [&] { return p3::figures(result); },
+        [&] { return p3::replay_scene(result); });
   });
 }
