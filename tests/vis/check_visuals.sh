@@ -52,6 +52,13 @@ check_images() {  # check_images LOG EXPECTED_NAME...
     echo "ok   $image ($(stat -c %s "$image") bytes)"
   done
 }
+# check_plots LOG PREFIX NAME...: check_images for PREFIX-NAME.png and PREFIX-NAME.svg of each NAME.
+check_plots() {
+  local log=$1 prefix=$2 name expected=()
+  shift 2
+  for name in "$@"; do expected+=("$prefix-$name.png" "$prefix-$name.svg"); done
+  check_images "$log" "${expected[@]}"
+}
 
 case "$mode" in
   plots)
@@ -59,36 +66,27 @@ case "$mode" in
     # 3 simulated seconds: every figure has data, the test stays short.
     run "$program 3" 3 --duration 3 --csv run/p3.csv --no-replay
     cd "$work"
-    expected=()
-    for f in tip error q2 torques; do expected+=("run/p3-$f.png" "run/p3-$f.svg"); done
-    check_images out.txt "${expected[@]}"
+    check_plots out.txt run/p3 tip error q2 torques
     ;;
   plots-p2)
     need_gnuplot
     run "$program" --duration 2 --csv run/p2.csv --no-replay
     cd "$work"
-    expected=()
-    for f in position error lambda torques; do expected+=("run/p2-$f.png" "run/p2-$f.svg"); done
-    check_images out.txt "${expected[@]}"
+    check_plots out.txt run/p2 position error lambda torques
     ;;
   plots-p3)
     need_gnuplot
     # 2 simulated seconds: the contact has settled, every figure has data.
     run "$program" --duration 2 --csv run/p3.csv --no-replay
     cd "$work"
-    expected=()
-    for f in force tracking tilt; do expected+=("run/p3-$f.png" "run/p3-$f.svg"); done
-    check_images out.txt "${expected[@]}"
+    check_plots out.txt run/p3 force tracking tilt
     ;;
   plots-p4)
     need_gnuplot
     run "$program" --duration 1 --no-replay
     cd "$work"
-    expected=()
-    for d in z y; do
-      for f in reach torques torques-plain; do expected+=("out/hw2-p4-$d-$f.png" "out/hw2-p4-$d-$f.svg"); done
-    done
-    check_images out.txt "${expected[@]}"
+    check_plots out.txt out/hw2-p4-z reach torques torques-plain
+    check_plots out.txt out/hw2-p4-y reach torques torques-plain
     ;;
   no-gnuplot)
     (cd "$work" && OPSPACE_GNUPLOT=/nonexistent/gnuplot "$program" 1 --duration 1 --csv run/p1.csv --no-replay) \
