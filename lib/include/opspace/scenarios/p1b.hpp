@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -56,7 +57,7 @@ class Observer {
 };
 
 /// The control function under test: exercises/ or solutions/ (hw2::p1b::control), or a mutant.
-using Controller = Vector6d (*)(hw2::p1b::Part, const hw2::p1b::State&, const hw2::p1b::Goal&);
+using Controller = std::function<Vector6d(hw2::p1b::Part, const hw2::p1b::State&, const hw2::p1b::Goal&)>;
 
 /// One simulated instant.
 struct Sample {

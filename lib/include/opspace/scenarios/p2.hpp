@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -68,8 +69,8 @@ class Observer {
 };
 
 /// The student's functions under test: exercises/ or solutions/, or a mutant.
-using Controller = Vector7d (*)(const hw2::p2::State&, const hw2::p2::Goal&);
-using DesiredAcceleration = Vector7d (*)(double);
+using Controller = std::function<Vector7d(const hw2::p2::State&, const hw2::p2::Goal&)>;
+using DesiredAcceleration = std::function<Vector7d(double)>;
 
 /// One simulated instant.
 struct Sample {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,7 @@ hw2::p3::Goal goal(double t);
 using Observer = p2::Observer;
 
 /// The student's law under test: exercises/ or solutions/, or a mutant.
-using Controller = Vector7d (*)(const hw2::p3::State&, const hw2::p3::Goal&);
+using Controller = std::function<Vector7d(const hw2::p3::State&, const hw2::p3::Goal&)>;
 
 /// One simulated instant. The contact values are those of the step that led to it.
 struct Sample {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -76,7 +77,7 @@ class Observer {
 Eigen::Vector3d plain_control(const hw2::p4::State& s, const TaskSpace& exact, const hw2::p4::Goal& goal);
 
 /// The control function under test: exercises/ or solutions/ (hw2::p4::control), or a mutant.
-using Controller = Eigen::Vector3d (*)(Target, const hw2::p4::State&, const hw2::p4::Goal&);
+using Controller = std::function<Eigen::Vector3d(Target, const hw2::p4::State&, const hw2::p4::Goal&)>;
 
 /// One simulated instant.
 struct Sample {

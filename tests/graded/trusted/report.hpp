@@ -16,7 +16,9 @@ struct ProblemResult {
   std::vector<TestResult> results;   ///< one per test, in the problem's order
   double score = 0.0;                ///< sum of the results' scores
   double max_score = 0.0;            ///< sum of the tests' points
-  std::string failure;  ///< empty, or how the problem's process ended early (crash, time-out)
+  std::string failure;   ///< empty, or why the problem could not be graded (its file does not compile)
+  std::string warnings;  ///< the compiler's warnings on the problem's file (shown, never fatal)
+  std::vector<std::string> notes;  ///< other things the student should know (oracle calls)
 };
 
 /// Runs every test of `problem` against `api`.

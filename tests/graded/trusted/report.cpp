@@ -14,6 +14,18 @@ std::string points(double value) {
   return buffer;
 }
 
+// Text from the student's code or the compiler, each line behind "| " so that it can never
+// pass for a line of the report.
+std::string quoted(std::string text) {
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  std::string out = "            | ";
+  for (const char c : text) {
+    out += c;
+    if (c == '\n') out += "            | ";
+  }
+  return out + "\n";
+}
+
 std::string status(const TestResult& r) {
   if (r.score >= r.test->points) return "PASS";
   return r.score > 0.0 ? "PART" : "FAIL";
@@ -40,11 +52,15 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems)
       const std::string score = points(r.score) + "/" + points(r.test->points);
       out << "  " << status(r) << "  " << score << std::string(score.size() < 6 ? 6 - score.size() : 1, ' ')
           << r.test->name << "\n";
-      if (r.score >= r.test->points) continue;
-      for (const std::string& finding : r.findings) out << "          - " << finding << "\n";
-      out << "          hint: " << r.test->hint << "\n";
+      if (r.score < r.test->points) {
+        for (const std::string& finding : r.findings) out << "          - " << finding << "\n";
+        if (!r.interrupted) out << "          hint: " << r.test->hint << "\n";
+      }
+      if (!r.printed.empty()) out << "          your code printed:\n" << quoted(r.printed);
     }
     if (!p.failure.empty()) out << "  ! " << p.failure << "\n";
+    for (const std::string& note : p.notes) out << "  ! " << note << "\n";
+    if (!p.warnings.empty()) out << "  compiler warnings (not counted):\n" << quoted(p.warnings);
     out << "  Problem " << p.problem->key << ": " << points(p.score) << " / " << points(p.max_score)
         << " points\n";
     total += p.score;

@@ -48,7 +48,7 @@ void degrees_of_freedom(const Hw2Api& api, Check& check) {
 }
 
 void mass_matrix(const Hw2Api& api, Check& check) {
-  Random rng(101);
+  Random rng(seed_for(101));
   for (int trial = 0; trial < kTrials; ++trial) {
     const double m1 = rng.uniform(1.0, 20.0), m2 = rng.uniform(1.0, 20.0);
     if (!check.near("A(" + masses(m1, m2) + ")", pp::mass_matrix(m1, m2), api.p1a.mass_matrix(m1, m2),
@@ -68,7 +68,7 @@ void pseudo_inverse(const Hw2Api& api, Check& check) {
   if (!check.near("J+ for J = [1 1]", pp::pseudo_inverse(), api.p1a.pseudo_inverse(pp::task_jacobian()),
                   kTol, "J+ = J^T (J J^T)^-1 shares the motion equally between the joints"))
     return;
-  Random rng(102);
+  Random rng(seed_for(102));
   for (int trial = 0; trial < kTrials; ++trial) {
     const Eigen::RowVector2d J = random_jacobian(rng);
     if (!check.near("J+ for J = " + format(J), opspace::pseudo_inverse(J), api.p1a.pseudo_inverse(J),
@@ -84,7 +84,7 @@ void pseudo_inverse_projector(const Hw2Api& api, Check& check) {
 }
 
 void weighted_inverse(const Hw2Api& api, Check& check) {
-  Random rng(103);
+  Random rng(seed_for(103));
   const Eigen::RowVector2d J = pp::task_jacobian();
   for (int trial = 0; trial < kTrials; ++trial) {
     const double w1 = rng.uniform(0.2, 10.0), w2 = rng.uniform(0.2, 10.0);
@@ -105,7 +105,7 @@ void weighted_inverse(const Hw2Api& api, Check& check) {
 }
 
 void weighted_projector(const Hw2Api& api, Check& check) {
-  Random rng(104);
+  Random rng(seed_for(104));
   const Eigen::RowVector2d J = pp::task_jacobian();
   for (int trial = 0; trial < kTrials; ++trial) {
     const double w1 = rng.uniform(0.2, 10.0), w2 = rng.uniform(0.2, 10.0);
@@ -119,7 +119,7 @@ void weighted_projector(const Hw2Api& api, Check& check) {
 }
 
 void inertia_weighted_inverse(const Hw2Api& api, Check& check) {
-  Random rng(105);
+  Random rng(seed_for(105));
   const Eigen::RowVector2d J = pp::task_jacobian();
   for (int trial = 0; trial < kTrials; ++trial) {
     const double m1 = rng.uniform(1.0, 20.0), m2 = rng.uniform(1.0, 20.0);
@@ -147,7 +147,7 @@ void inertia_weighted_projector(const Hw2Api& api, Check& check) {
 }
 
 void inverse_kinematics_family(const Hw2Api& api, Check& check) {
-  Random rng(106);
+  Random rng(seed_for(106));
   for (int trial = 0; trial < kTrials; ++trial) {
     const Eigen::RowVector2d J = random_jacobian(rng);
     const Eigen::Vector2d J_inv = opspace::weighted_inverse(J, random_spd(rng));
@@ -163,7 +163,7 @@ void inverse_kinematics_family(const Hw2Api& api, Check& check) {
 }
 
 void split_displacement(const Hw2Api& api, Check& check) {
-  Random rng(107);
+  Random rng(seed_for(107));
   for (int trial = 0; trial < kTrials; ++trial) {
     const double m1 = rng.uniform(1.0, 20.0), m2 = rng.uniform(1.0, 20.0);
     const double dx = rng.uniform(0.01, 0.5);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -59,10 +60,27 @@ struct TestResult {
   const GradedTest* test = nullptr;  ///< the test, owned by its Problem
   double score = 0.0;                ///< points earned: Check::fraction() times the test's points
   std::vector<std::string> findings;  ///< failed checks, or what the student code threw
+  /// The student's code crashed, timed out, exited or sent garbage during this test: the
+  /// findings say what happened, and no formula hint applies.
+  bool interrupted = false;
+  std::string printed;  ///< what the student's code printed during the test (sanitized, cut)
 };
 
+class RunnerProcess;
+
 /// Runs `tests` against `api`; a test whose body throws earns 0 and reports the exception.
-std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw2Api& api);
+/// With a `runner` (the grader), each test gets `timeout` seconds for all its requests, and a
+/// runner that fails is started again for the next test.
+std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw2Api& api,
+                                  RunnerProcess* runner = nullptr, double timeout = 0.0);
+
+/// The random inputs of a grading run derive from one seed (hw2-grade prints it; --seed
+/// replays it). 0, the default, gives the fixed inputs the suite's own tests use.
+void set_run_seed(std::uint64_t seed);
+/// The seed of the run.
+std::uint64_t run_seed();
+/// The seed of one random stream of a test: `salt` itself when the run seed is 0.
+unsigned seed_for(unsigned salt);
 
 /// "[[a, b], [c, d]]", six significant digits: how matrices appear in findings.
 std::string format(const Eigen::Ref<const Eigen::MatrixXd>& M);

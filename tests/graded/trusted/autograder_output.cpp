@@ -47,7 +47,8 @@ std::string xml_text(const std::string& text) {
 std::string feedback(const TestResult& r) {
   std::string text;
   for (const std::string& f : r.findings) text += "- " + f + "\n";
-  if (r.score < r.test->points) text += "hint: " + r.test->hint;
+  if (r.score < r.test->points && !r.interrupted) text += "hint: " + r.test->hint + "\n";
+  if (!r.printed.empty()) text += "your code printed:\n" + r.printed + "\n";
   return text;
 }
 
@@ -69,6 +70,7 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
     max_score += p.max_score;
     summary << "Problem " << p.problem->key << ": " << p.score << " / " << p.max_score << "\n";
     if (!p.failure.empty()) summary << "  " << p.failure << "\n";
+    if (!p.warnings.empty()) summary << "  compiler warnings:\n" << p.warnings << "\n";
   }
   out.precision(10);
   out << "{\n  \"score\": " << score << ",\n  \"max_score\": " << max_score

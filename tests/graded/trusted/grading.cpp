@@ -1,9 +1,12 @@
 #include "grading.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <sstream>
+
+#include "runner_process.hpp"
 
 namespace opspace::grading {
 
@@ -103,21 +106,64 @@ void Check::credit_at_most(double fraction, const std::string& message) {
   findings_.push_back(message);
 }
 
-std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw2Api& api) {
+namespace {
+
+std::uint64_t g_run_seed = 0;
+
+TestResult run_test(const GradedTest& test, const Hw2Api& api) {
+  TestResult result;
+  result.test = &test;
+  Check check;
+  try {
+    test.body(api, check);
+    result.score = check.fraction() * test.points;
+    result.findings = check.findings();
+  } catch (const StudentException& e) {
+    result.findings = {e.what()};
+  } catch (const RunnerFailure& e) {
+    result.findings = {e.what()};
+    result.interrupted = true;
+  } catch (const std::exception& e) {
+    result.findings = {std::string("your code threw an exception: ") + e.what()};
+  } catch (...) {
+    result.findings = {"your code threw an exception that is not a std::exception"};
+  }
+  return result;
+}
+
+}  // namespace
+
+void set_run_seed(std::uint64_t seed) { g_run_seed = seed; }
+std::uint64_t run_seed() { return g_run_seed; }
+
+unsigned seed_for(unsigned salt) {
+  if (g_run_seed == 0) return salt;
+  // splitmix64 of (seed, salt): streams of different tests and runs are unrelated.
+  std::uint64_t z = g_run_seed + 0x9e3779b97f4a7c15ull * (salt + 1ull);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return static_cast<unsigned>(z ^ (z >> 31));
+}
+
+std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw2Api& api, RunnerProcess* runner,
+                                  double timeout) {
   std::vector<TestResult> results;
   results.reserve(tests.size());
   for (const GradedTest& test : tests) {
-    TestResult result;
-    result.test = &test;
-    Check check;
-    try {
-      test.body(api, check);
-      result.score = check.fraction() * test.points;
-      result.findings = check.findings();
-    } catch (const std::exception& e) {
-      result.findings = {std::string("your code threw an exception: ") + e.what()};
-    } catch (...) {
-      result.findings = {"your code threw an exception that is not a std::exception"};
+    if (runner) {
+      const auto budget = std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(timeout));
+      runner->begin_test(std::chrono::steady_clock::now() + budget, timeout);
+    }
+    TestResult result = run_test(test, api);
+    if (runner) {
+      // A failure of the runner is what happened, whatever the checks concluded from it.
+      if (!runner->failure().empty()) {
+        result.score = 0.0;
+        result.findings = {runner->failure() + " during this test"};
+        result.interrupted = true;
+      }
+      const Printed printed = runner->end_test();
+      if (printed.total > 0) result.printed = sanitize(printed.text, RunnerProcess::kMaxPrinted, printed.total);
     }
     results.push_back(std::move(result));
   }

@@ -1,0 +1,313 @@
+#include "grader.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <thread>
+
+#include "remote_api.hpp"
+#include "runner_build.hpp"
+#include "runner_process.hpp"
+#include "sandbox.hpp"
+#include "suite.hpp"
+
+namespace opspace::grading {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+// Everything runs about 15 times slower under the sanitizers.
+constexpr double kDefaultTimeout = 300.0;
+const std::vector<std::string> kRunnerEnv = {"ASAN_OPTIONS=detect_leaks=0"};
+#else
+constexpr double kDefaultTimeout = 30.0;
+const std::vector<std::string> kRunnerEnv = {};
+#endif
+
+int usage(std::ostream& out, const char* program, int code) {
+  out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout SECONDS] [--seed N]\n"
+      << "          [--gradescope FILE] [--junit FILE] [--hidden TEXT]... [--sandbox-user NAME] [--no-isolation]\n"
+      << "  --problem      grade one problem only (";
+  bool first = true;
+  for (const Problem& p : graded_suite()) {
+    out << (first ? "" : ", ") << p.key;
+    first = false;
+  }
+  out << ")\n"
+      << "  --exercises    the folder holding p1a.cpp ... p4.cpp (default: this repository's)\n"
+      << "  --timeout      time limit of each test, in seconds (default " << kDefaultTimeout << ")\n"
+      << "  --seed         replay the random inputs of an earlier run (its report prints the seed)\n"
+      << "  --gradescope   also write Gradescope's results.json to FILE\n"
+      << "  --junit        also write JUnit XML to FILE\n"
+      << "  --hidden       mark the tests whose name contains TEXT hidden in results.json\n"
+      << "  --sandbox-user when run as root: the unprivileged user that runs student code\n"
+      << "                 (default: opspace-runner if it exists, else nobody)\n"
+      << "  --no-isolation run the student's code without the sandbox (debugging only)\n"
+      << "Exit code 0 whenever grading ran, whatever the score.\n";
+  return code;
+}
+
+// Writes through a temporary file and a rename: a reader sees the old file or the whole new one.
+template <typename Writer>
+bool write_file(const std::string& path, const char* what, Writer writer) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream file(temporary);
+    if (file) writer(file);
+    if (!file) {
+      std::cerr << "hw2-grade: cannot write the " << what << " file " << path << "\n";
+      return false;
+    }
+  }
+  std::error_code ec;
+  fs::rename(temporary, path, ec);
+  if (ec) {
+    std::cerr << "hw2-grade: cannot write the " << what << " file " << path << ": " << ec.message() << "\n";
+    return false;
+  }
+  std::cout << what << ": " << path << "\n";
+  return true;
+}
+
+std::string file_of(const std::string& key) { return "p" + key + ".cpp"; }
+
+double since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Builds the runners of `problems`, several at once (one compiler per core).
+std::vector<BuiltRunner> build_all(const std::vector<const Problem*>& problems, const Toolchain& toolchain,
+                                   const GraderOptions& options, const BuildSettings& settings) {
+  std::vector<BuiltRunner> built(problems.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < problems.size(); i = next++) {
+      const std::string file = file_of(problems[i]->key);
+      try {
+        built[i] = build_runner(toolchain, problems[i]->key, options.exercises + "/" + file, "exercises/" + file, settings);
+      } catch (const std::exception& e) {
+        built[i].error = std::string("the grader could not build the runner: ") + e.what();
+      }
+    }
+  };
+  const unsigned jobs = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), static_cast<unsigned>(problems.size())));
+  std::vector<std::thread> threads;
+  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  return built;
+}
+
+// A problem whose runner could not be built: every test 0, with the reason and no hint.
+ProblemResult not_built(const Problem& problem, const BuiltRunner& built) {
+  ProblemResult out;
+  out.problem = &problem;
+  out.failure = built.error;
+  out.warnings = built.warnings;
+  for (const GradedTest& t : problem.tests) {
+    TestResult r;
+    r.test = &t;
+    r.findings = {"not graded: " + built.error.substr(0, built.error.find('\n'))};
+    r.interrupted = true;
+    out.results.push_back(r);
+    out.max_score += t.points;
+  }
+  return out;
+}
+
+// Tests answered by a library oracle the student's file calls earn nothing.
+void apply_oracles(ProblemResult& result, const BuiltRunner& built) {
+  for (const Oracle& oracle : built.called) {
+    std::string call;
+    for (const std::string& c : built.calls)
+      if (c.rfind(oracle.prefix, 0) == 0) call = c;
+    result.notes.push_back("exercises/" + file_of(result.problem->key) + " calls " + call + ", which computes " +
+                           oracle.what + ": the tests it answers earn 0. Write it yourself (docs/grader.md)");
+    for (TestResult& r : result.results) {
+      const bool answered = oracle.tests.empty() ||
+                            std::find(oracle.tests.begin(), oracle.tests.end(), r.test->name) != oracle.tests.end();
+      if (!answered) continue;
+      r.score = 0.0;
+      r.findings.insert(r.findings.begin(), "uses the library's own answer " + oracle.prefix + "...: not counted");
+      r.interrupted = true;
+    }
+  }
+  result.score = 0.0;
+  for (const TestResult& r : result.results) result.score += r.score;
+}
+
+ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, const std::string& run_dir,
+                            const GraderOptions& options, Protections& protections, bool& started) {
+  if (!built.ok) return not_built(problem, built);
+  const std::string binary = run_dir + "/runner-" + problem.key;
+  fs::copy_file(built.binary, binary, fs::copy_options::overwrite_existing);
+  fs::permissions(binary, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                              fs::perms::others_read | fs::perms::others_exec);
+  RunnerProcess runner(RunnerConfig{binary, run_dir, options.user, options.isolate, kRunnerEnv});
+  const Hw2Api api = remote_api(problem.key, runner);
+  ProblemResult out;
+  out.problem = &problem;
+  out.results = run_tests(problem.tests, api, &runner, options.timeout);
+  runner.stop();
+  for (const TestResult& r : out.results) {
+    out.score += r.score;
+    out.max_score += r.test->points;
+  }
+  out.warnings = built.warnings;
+  apply_oracles(out, built);
+  if (runner.starts() > 0) {
+    if (!started) protections = runner.protections();
+    started = true;
+  }
+  return out;
+}
+
+bool parse(int argc, char** argv, GraderOptions& options, int& exit_code) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--help" || arg == "-h") {
+      exit_code = usage(std::cout, argv[0], 0);
+      return false;
+    }
+    if (arg == "--problem" && has_value) {
+      options.only_problem = argv[++i];
+    } else if (arg == "--exercises" && has_value) {
+      options.exercises = argv[++i];
+    } else if (arg == "--timeout" && has_value) {
+      char* end = nullptr;
+      options.timeout = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(options.timeout > 0.0) || options.timeout > 86400.0) {
+        std::cerr << argv[0] << ": --timeout needs a number of seconds between 0 and 86400\n";
+        exit_code = 2;
+        return false;
+      }
+    } else if (arg == "--seed" && has_value) {
+      char* end = nullptr;
+      const std::string text = argv[++i];
+      options.seed = std::strtoull(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || text[0] == '-' || options.seed == 0) {
+        std::cerr << argv[0] << ": --seed needs a positive whole number\n";
+        exit_code = 2;
+        return false;
+      }
+    } else if (arg == "--gradescope" && has_value) {
+      options.gradescope_path = argv[++i];
+    } else if (arg == "--junit" && has_value) {
+      options.junit_path = argv[++i];
+    } else if (arg == "--hidden" && has_value) {
+      options.hidden.push_back(argv[++i]);
+    } else if (arg == "--sandbox-user" && has_value) {
+      options.user = argv[++i];
+    } else if (arg == "--no-isolation") {
+      options.isolate = false;
+    } else {
+      std::cerr << argv[0] << ": unknown or incomplete argument '" << arg << "'\n";
+      exit_code = usage(std::cerr, argv[0], 2);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+int grader_main(int argc, char** argv, const std::string& default_exercises) {
+  GraderOptions options;
+  options.exercises = default_exercises;
+  options.timeout = kDefaultTimeout;
+  int exit_code = 0;
+  if (!parse(argc, argv, options, exit_code)) return exit_code;
+  if (options.user.empty()) options.user = default_sandbox_user();
+  if (!options.isolate) options.user.clear();
+  if (options.seed == 0) {
+    std::random_device device;
+    options.seed = (static_cast<std::uint64_t>(device()) << 20 ^ device()) % 1000000000ull + 1;
+  }
+  set_run_seed(options.seed);
+  become_subreaper();
+
+  const std::vector<Problem> suite = graded_suite();
+  std::vector<const Problem*> chosen;
+  for (const Problem& problem : suite)
+    if (options.only_problem.empty() || problem.key == options.only_problem) chosen.push_back(&problem);
+  if (chosen.empty()) {
+    std::cerr << argv[0] << ": no problem '" << options.only_problem << "'\n";
+    return usage(std::cerr, argv[0], 2);
+  }
+
+  Toolchain toolchain;
+  try {
+    toolchain = load_toolchain(OPSPACE_RUNNER_TOOLCHAIN);
+  } catch (const std::exception& e) {
+    std::cerr << "hw2-grade: " << e.what() << "\n";
+    return 1;
+  }
+  std::cout << "opspace grader: problem set 2, " << options.exercises << " (seed " << options.seed << ")\n"
+            << std::flush;
+  const auto start = std::chrono::steady_clock::now();
+  std::cerr << "building the runners of " << chosen.size() << " problem(s)...\n";
+  const BuildSettings settings{OPSPACE_GRADING_CACHE, options.user, options.isolate, 180.0};
+  const std::vector<BuiltRunner> built = build_all(chosen, toolchain, options, settings);
+  const double build_seconds = since(start);
+
+  char pattern[] = "/tmp/opspace-runners-XXXXXX";
+  if (!mkdtemp(pattern)) {
+    std::cerr << "hw2-grade: cannot create a folder in /tmp\n";
+    return 1;
+  }
+  const std::string run_dir = pattern;
+  chmod(run_dir.c_str(), 0755);
+  std::vector<ProblemResult> results;
+  Protections protections;
+  bool started = false;
+  const auto grading_start = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    std::cerr << "grading problem " << chosen[i]->key << "...\n";
+    try {
+      results.push_back(grade_problem(*chosen[i], built[i], run_dir, options, protections, started));
+    } catch (const std::exception& e) {
+      BuiltRunner broken = built[i];
+      broken.ok = false;
+      broken.error = std::string("the grader could not run this problem: ") + e.what();
+      results.push_back(not_built(*chosen[i], broken));
+    }
+  }
+  std::error_code ec;
+  fs::remove_all(run_dir, ec);
+  const double grading_seconds = since(grading_start), seconds = since(start);
+  print_report(std::cout, results);
+  std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,
+              grading_seconds, static_cast<unsigned long long>(options.seed),
+              static_cast<unsigned long long>(options.seed));
+  if (!options.isolate) {
+    std::printf("Sandbox: off (--no-isolation)\n");
+  } else if (started && !protections.missing().empty()) {
+    std::printf("Sandbox: these protections were not available here: %s (docs/grader.md)\n",
+                protections.missing().c_str());
+  }
+  std::fflush(stdout);
+
+  bool written = true;
+  if (!options.gradescope_path.empty()) {
+    written &= write_file(options.gradescope_path, "results.json",
+                          [&](std::ostream& out) { write_gradescope(out, results, seconds, options.hidden); });
+  }
+  if (!options.junit_path.empty()) {
+    written &= write_file(options.junit_path, "JUnit XML", [&](std::ostream& out) { write_junit(out, results, seconds); });
+  }
+  return written ? 0 : 1;
+}
+
+}  // namespace opspace::grading

@@ -1,0 +1,45 @@
+/// @file grader.hpp
+/// The grading command behind hw2-grade, the trusted side: it builds each problem's runner
+/// from that problem's exercise file, asks the runner for the student's values, judges them
+/// against its oracles, and writes the report, results.json and JUnit XML. It never links,
+/// loads or runs a student's code in its own process.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "report.hpp"
+
+namespace opspace::grading {
+
+/// What hw2-grade's command line sets (docs/grader.md).
+struct GraderOptions {
+  std::string only_problem;         ///< empty: every problem
+  std::string exercises;            ///< the folder of p1a.cpp ... p4.cpp to grade
+  double timeout = 30.0;            ///< seconds per test for every request to the runner
+  std::string gradescope_path;      ///< results.json, if not empty
+  std::string junit_path;           ///< JUnit XML, if not empty
+  std::vector<std::string> hidden;  ///< tests whose name contains one of these are hidden
+  bool isolate = true;              ///< the sandbox (false: debugging only)
+  std::uint64_t seed = 0;           ///< random inputs; 0: draw a new seed
+  std::string user;                 ///< when root: the user that runs student code
+};
+
+/// Gradescope's results.json: score, max_score, execution_time, output, and tests[] with
+/// name, score, max_score, status, output and visibility ("hidden" when the test's name
+/// contains one of `hidden`, else "visible").
+void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds,
+                      const std::vector<std::string>& hidden);
+
+/// JUnit XML: one <testsuite> per problem, one <testcase> per test, <failure> with the findings.
+void write_junit(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds);
+
+/// The whole command: parses argv, grades the exercise files in `default_exercises` (or
+/// --exercises), prints, writes the requested files. Returns the exit code: 0 when grading ran
+/// (whatever the score), 2 for a bad command line, 1 when an output file cannot be written or
+/// the grader itself is broken.
+int grader_main(int argc, char** argv, const std::string& default_exercises);
+
+}  // namespace opspace::grading

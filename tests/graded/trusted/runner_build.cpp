@@ -1,0 +1,435 @@
+#include "runner_build.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pwd.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "runner_process.hpp"
+#include "sandbox.hpp"
+
+namespace opspace::grading {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kMaxSource = 1u << 20;     // an exercise file is a few kilobytes
+constexpr std::size_t kMaxToolOutput = 1u << 16;  // what is kept of the compiler's output
+constexpr std::size_t kMaxWarnings = 1500;        // what the report shows of the warnings
+
+struct CommandResult {
+  bool timed_out = false;
+  int status = 0;
+  std::string output;  // stdout and stderr, at most kMaxToolOutput bytes
+};
+
+// Runs argv in the sandbox (work_dir writable), with a time limit, capturing its output.
+CommandResult run_tool(const std::vector<std::string>& argv, const std::string& work_dir,
+                       const std::vector<std::string>& visible, const BuildSettings& settings) {
+  int out[2];
+  if (pipe2(out, O_CLOEXEC) != 0) throw std::runtime_error("the grader could not create a pipe");
+  SandboxSpec spec;
+  spec.argv = argv;
+  spec.env = {"PATH=/usr/bin:/bin", "LANG=C", "LC_ALL=C", "TMPDIR=/tmp"};
+  spec.work_dir = work_dir;
+  spec.work_dir_writable = true;
+  spec.visible = visible;
+  spec.user = settings.user;
+  spec.isolate = settings.isolate;
+  // A compiler on one exercise file: well under 2 GiB and a minute on a laptop; a template
+  // explosion in a student's file stops at these.
+  spec.limits.address_space = 4ull << 30;
+  spec.limits.cpu_seconds = static_cast<unsigned long long>(settings.timeout);
+  spec.limits.file_size = 256ull << 20;
+  spec.limits.open_files = 256;
+  spec.limits.processes = 64;
+  const int null_in = open("/dev/null", O_RDONLY | O_CLOEXEC);
+  spec.fds = {{0, null_in}, {1, out[1]}, {2, out[1]}};
+  Sandboxed program;
+  try {
+    program = spawn(spec);
+  } catch (...) {
+    close(out[0]), close(out[1]), close(null_in);
+    throw;
+  }
+  close(out[1]);
+  close(null_in);
+  CommandResult result;
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(settings.timeout));
+  char buffer[4096];
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) {
+      result.timed_out = true;
+      break;
+    }
+    pollfd p{out[0], POLLIN, 0};
+    const int ready = poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
+    if (ready < 0 && errno != EINTR) break;
+    if (ready <= 0) continue;
+    const ssize_t n = read(out[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    if (result.output.size() < kMaxToolOutput)
+      result.output.append(buffer, std::min<std::size_t>(static_cast<std::size_t>(n), kMaxToolOutput - result.output.size()));
+  }
+  close(out[0]);
+  if (result.timed_out || !wait_until(program, deadline, result.status)) {
+    result.timed_out = true;
+    result.status = kill_all(program);
+  }
+  return result;
+}
+
+std::string read_file(const std::string& path, std::size_t limit) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::string text;
+  text.resize(limit + 1);
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
+}
+
+std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 1469598103934665603ull) {
+  for (const char c : text) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+// "p1b.cpp:12:5: error: ..." and the source line below it, with the work folder's name of the
+// file replaced by the name the student knows. Errors located in other files are shown only
+// if those files are public headers (an include root).
+std::string first_error(const std::string& output, const std::string& work_file, const std::string& shown_as,
+                        const std::vector<std::string>& include_roots) {
+  const std::vector<std::string> all = lines(output);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const std::string& line = all[i];
+    const bool error = line.find(" error: ") != std::string::npos || line.find("undefined reference") != std::string::npos;
+    if (!error) continue;
+    std::string shown = replace_all(line, work_file, shown_as);
+    const bool in_student_file = shown.rfind(shown_as, 0) == 0;
+    bool in_public_header = false;
+    for (const std::string& root : include_roots) in_public_header = in_public_header || line.rfind(root, 0) == 0;
+    const bool from_linker = line.find("undefined reference") != std::string::npos;
+    if (!in_student_file && !in_public_header && !from_linker) {
+      return "a compile error in a file your exercise includes, outside the library's and the system's headers";
+    }
+    if (from_linker) {
+      const std::size_t at = shown.find("undefined reference");
+      shown = shown_as + ": " + shown.substr(at);
+    }
+    if (in_student_file && i + 1 < all.size() && !all[i + 1].empty() && all[i + 1][0] == ' ') shown += "\n" + all[i + 1];
+    return sanitize(shown, 600, shown.size());
+  }
+  return "";
+}
+
+std::string warnings_of(const std::string& output, const std::string& work_file, const std::string& shown_as) {
+  std::string out;
+  for (const std::string& line : lines(output)) {
+    if (line.find(" warning: ") == std::string::npos) continue;
+    out += replace_all(line, work_file, shown_as) + "\n";
+  }
+  return out.empty() ? out : sanitize(out, kMaxWarnings, out.size());
+}
+
+// The files a compilation read, from its dependency file (make syntax: "target: dep dep \").
+std::vector<std::string> dependencies(const std::string& depfile) {
+  std::string text = read_file(depfile, 4u << 20);
+  std::vector<std::string> out;
+  const std::size_t colon = text.find(": ");
+  if (colon == std::string::npos) return out;
+  std::string current;
+  for (std::size_t i = colon + 2; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\\' && i + 1 < text.size() && (text[i + 1] == '\n' || text[i + 1] == ' ')) {
+      if (text[i + 1] == ' ') current += ' ';
+      ++i;
+      continue;
+    }
+    if (c == ' ' || c == '\n' || c == '\t') {
+      if (!current.empty()) out.push_back(current);
+      current.clear();
+      continue;
+    }
+    current += c;
+  }
+  if (!current.empty()) out.push_back(current);
+  return out;
+}
+
+bool under(const fs::path& path, const std::string& root) {
+  std::error_code ec;
+  const fs::path r = fs::weakly_canonical(root, ec);
+  const std::string p = path.string(), prefix = r.string();
+  return p.size() > prefix.size() && p.compare(0, prefix.size(), prefix) == 0 && p[prefix.size()] == '/';
+}
+
+// Every file the compilation read must be the student's own file or a public header.
+std::string check_includes(const std::string& depfile, const std::string& work_dir, const std::string& shown_as,
+                           const Toolchain& toolchain) {
+  for (const std::string& dep : dependencies(depfile)) {
+    std::error_code ec;
+    const fs::path path = fs::weakly_canonical(fs::path(dep).is_absolute() ? fs::path(dep) : fs::path(work_dir) / dep, ec);
+    if (under(path, work_dir)) {
+      if (path.filename() == fs::path(shown_as).filename()) continue;
+    } else {
+      bool allowed = false;
+      for (const std::string& root : toolchain.include_roots) allowed = allowed || under(path, root);
+      if (allowed) continue;
+    }
+    return shown_as + " includes " + sanitize(dep, 200, dep.size()) +
+           ": an exercise may include only the library's headers (<opspace/...>), Eigen and the standard library";
+  }
+  return "";
+}
+
+void make_owned(const std::string& path, const std::string& user) {
+  if (user.empty() || geteuid() != 0) return;
+  const passwd* pw = getpwnam(user.c_str());
+  if (!pw || chown(path.c_str(), pw->pw_uid, pw->pw_gid) != 0)
+    throw std::runtime_error("cannot give the build folder to user " + user);
+}
+
+const std::vector<std::string>* inputs_of(const Toolchain& toolchain, const std::string& key) {
+  for (const auto& [k, inputs] : toolchain.inputs)
+    if (k == key) return &inputs;
+  return nullptr;
+}
+
+// Saves and restores what a cached build reported besides its binary.
+void save_report(const std::string& path, const BuiltRunner& built) {
+  std::ofstream out(path + ".tmp");
+  out << built.warnings.size() << "\n" << built.warnings << "\n";
+  for (const std::string& call : built.calls) out << call << "\n";
+  out.close();
+  fs::rename(path + ".tmp", path);
+}
+
+bool load_report(const std::string& path, BuiltRunner& built) {
+  std::ifstream in(path);
+  std::size_t size = 0;
+  if (!(in >> size) || size > kMaxWarnings + 200) return false;
+  in.get();
+  built.warnings.resize(size);
+  in.read(built.warnings.data(), static_cast<std::streamsize>(size));
+  in.get();
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) built.calls.push_back(line);
+  return true;
+}
+
+void match_oracles(const std::string& key, BuiltRunner& built) {
+  for (const Oracle& oracle : oracles(key)) {
+    const bool called = std::any_of(built.calls.begin(), built.calls.end(),
+                                    [&](const std::string& c) { return c.rfind(oracle.prefix, 0) == 0; });
+    if (called) built.called.push_back(oracle);
+  }
+  // Keep only the calls that belong to an oracle.
+  built.calls.erase(std::remove_if(built.calls.begin(), built.calls.end(),
+                                   [&](const std::string& c) {
+                                     return std::none_of(built.called.begin(), built.called.end(),
+                                                         [&](const Oracle& o) { return c.rfind(o.prefix, 0) == 0; });
+                                   }),
+                    built.calls.end());
+}
+
+}  // namespace
+
+Toolchain load_toolchain(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read the runner toolchain (was the grader built?)");
+  Toolchain t;
+  std::string line, all;
+  for (int number = 1; std::getline(in, line); ++number) {
+    all += line + "\n";
+    if (line.empty() || line[0] == '#') continue;
+    const std::size_t eq = line.find('=');
+    if (eq == std::string::npos) throw std::runtime_error(path + ":" + std::to_string(number) + ": expected KEY=VALUE");
+    const std::string key = line.substr(0, eq), value = line.substr(eq + 1);
+    if (value.empty()) continue;  // a generator expression that is empty in this configuration
+    if (key == "compile") t.compile.push_back(value);
+    else if (key == "link") t.link.push_back(value);
+    else if (key == "include") t.include_roots.push_back(value);
+    else if (key == "visible") t.visible.push_back(value);
+    else if (key == "nm") t.nm = value;
+    else if (key.rfind("inputs-", 0) == 0) {
+      const std::string problem = key.substr(7);
+      auto it = std::find_if(t.inputs.begin(), t.inputs.end(), [&](const auto& p) { return p.first == problem; });
+      if (it == t.inputs.end()) it = t.inputs.insert(t.inputs.end(), {problem, {}});
+      it->second.push_back(value);
+    } else {
+      throw std::runtime_error(path + ":" + std::to_string(number) + ": unknown key '" + key + "'");
+    }
+  }
+  if (t.compile.empty() || t.link.empty() || t.nm.empty())
+    throw std::runtime_error(path + ": compile=, link= and nm= are required");
+  t.fingerprint = std::to_string(fnv1a(all));
+  return t;
+}
+
+std::vector<Oracle> oracles(const std::string& key) {
+  // Every problem: the scenarios compute the reference's quantities and laws.
+  std::vector<Oracle> out = {{"opspace::scenarios::", "the scenarios' own trajectories and control laws", {}}};
+  if (key == "1a") {
+    const std::string ginv = "iv. the pseudo-inverse is J^T (J J^T)^-1", split = "vi. J+ shares dx equally between the joints, Jbar moves only joint 2";
+    out.push_back({"opspace::pp::", "the closed forms of problem 1a (lib/include/opspace/pp_robot.hpp)", {}});
+    out.push_back({"opspace::pseudo_inverse(", "J+ (linalg.hpp)", {ginv, split}});
+    out.push_back({"opspace::weighted_inverse(", "J# (linalg.hpp)",
+                   {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1", "vi. the inertia-weighted inverse moves only the light link", split}});
+    out.push_back({"opspace::dynamically_consistent_inverse(", "Jbar (linalg.hpp)",
+                   {"vi. the inertia-weighted inverse moves only the light link", split}});
+    out.push_back({"opspace::nullspace_projector(", "I - J_inv J (linalg.hpp)",
+                   {"iv. I - J+ J keeps only the self-motions that leave the end-effector still",
+                    "v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector",
+                    "iv-vi. every inverse gives the family dq = J_inv dx + (I - J_inv J) dq0"}});
+  } else if (key == "4") {
+    const std::vector<std::string> analysis = {
+        "i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv",
+        "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv elsewhere",
+        "iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0",
+        "iv. at theta = (0, 90 deg, 0) the elbow lock Z0 is Type I and the overhead lock Y0 Type II",
+        "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one"};
+    for (const char* f : {"opspace::directions(", "opspace::singularity_type(", "opspace::analyse_singularities(",
+                          "opspace::self_motion_curvature(", "opspace::directional_hessian("})
+      out.push_back({f, "the singularity analysis of problem 4 (singularity.hpp)", analysis});
+  }
+  return out;
+}
+
+BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, const std::string& source,
+                         const std::string& shown_as, const BuildSettings& settings) {
+  BuiltRunner built;
+  const std::vector<std::string>* inputs = inputs_of(toolchain, key);
+  if (!inputs) throw std::runtime_error("the runner toolchain has no inputs for problem " + key);
+  std::string text;
+  try {
+    text = read_file(source, kMaxSource);
+  } catch (const std::exception&) {
+    built.error = shown_as + ": cannot read the file";
+    return built;
+  }
+  if (text.size() > kMaxSource) {
+    built.error = shown_as + ": larger than " + std::to_string(kMaxSource >> 10) + " KiB; an exercise file is a few";
+    return built;
+  }
+
+  // The cache: same toolchain, same libraries, same file -> same runner.
+  std::uint64_t hash = fnv1a(toolchain.fingerprint + "\n" + key + "\n" + text);
+  for (const std::string& input : *inputs) {
+    std::error_code ec;
+    const auto time = fs::last_write_time(input, ec).time_since_epoch().count();
+    hash = fnv1a(input + std::to_string(time), hash);
+  }
+  char name[64];
+  std::snprintf(name, sizeof name, "runner-%s-%016llx", key.c_str(), static_cast<unsigned long long>(hash));
+  const std::string cached = settings.cache_dir + "/" + name;
+  fs::create_directories(settings.cache_dir);
+  if (fs::exists(cached) && load_report(cached + ".report", built)) {
+    built.ok = true;
+    built.cached = true;
+    built.binary = cached;
+    match_oracles(key, built);
+    return built;
+  }
+
+  char pattern[] = "/tmp/opspace-build-XXXXXX";
+  if (!mkdtemp(pattern)) throw std::runtime_error("cannot create a build folder in /tmp");
+  const std::string work = pattern;
+  struct Cleanup {
+    std::string dir;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } cleanup{work};
+  const std::string file = fs::path(shown_as).filename().string();
+  const std::string work_file = work + "/" + file;
+  std::ofstream(work_file, std::ios::binary) << text;
+  make_owned(work, settings.user);
+  make_owned(work_file, settings.user);
+
+  // Compile.
+  std::vector<std::string> compile = toolchain.compile;
+  compile.insert(compile.end(), {"-c", work_file, "-o", work + "/exercise.o", "-MD", "-MF", work + "/exercise.d"});
+  const CommandResult cc = run_tool(compile, work, toolchain.visible, settings);
+  built.warnings = warnings_of(cc.output, work_file, shown_as);
+  if (cc.timed_out) {
+    built.error = "compiling " + shown_as + " took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s";
+    return built;
+  }
+  if (!WIFEXITED(cc.status) || WEXITSTATUS(cc.status) != 0) {
+    built.error = first_error(cc.output, work_file, shown_as, toolchain.include_roots);
+    if (built.error.empty()) built.error = "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")";
+    return built;
+  }
+  built.error = check_includes(work + "/exercise.d", work, shown_as, toolchain);
+  if (!built.error.empty()) return built;
+
+  // Which library functions it calls: the object's undefined symbols.
+  const CommandResult nm = run_tool({toolchain.nm, "-C", "--undefined-only", "-P", work + "/exercise.o"}, work,
+                                    toolchain.visible, settings);
+  if (nm.timed_out || !WIFEXITED(nm.status) || WEXITSTATUS(nm.status) != 0) {
+    built.error = "the grader could not list the functions " + shown_as + " calls";
+    return built;
+  }
+  for (const std::string& line : lines(nm.output)) {
+    // -P: "NAME TYPE [VALUE SIZE]"; NAME may hold spaces when demangled, TYPE is "U".
+    const std::size_t at = line.rfind(" U");
+    if (at != std::string::npos) built.calls.push_back(line.substr(0, at));
+  }
+  match_oracles(key, built);
+
+  // Link with the problem's runner loop and the library.
+  std::vector<std::string> link = toolchain.link;
+  link.push_back(work + "/exercise.o");
+  link.insert(link.end(), inputs->begin(), inputs->end());
+  link.insert(link.end(), {"-o", work + "/runner"});
+  const CommandResult ld = run_tool(link, work, toolchain.visible, settings);
+  if (ld.timed_out || !WIFEXITED(ld.status) || WEXITSTATUS(ld.status) != 0) {
+    built.error = first_error(ld.output, work + "/exercise.o", shown_as, toolchain.include_roots);
+    if (built.error.empty()) built.error = "linking the runner of " + shown_as + " failed";
+    built.error = "linking failed: " + built.error;
+    return built;
+  }
+  fs::copy_file(work + "/runner", cached + ".tmp", fs::copy_options::overwrite_existing);
+  fs::permissions(cached + ".tmp", fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                       fs::perms::others_read | fs::perms::others_exec);
+  fs::rename(cached + ".tmp", cached);
+  save_report(cached + ".report", built);
+  built.ok = true;
+  built.binary = cached;
+  return built;
+}
+
+}  // namespace opspace::grading

@@ -1,0 +1,62 @@
+/// @file runner_build.hpp
+/// Building a problem's runner from one exercise file, in the sandbox: compile (the student's
+/// warnings shown, never fatal), check what the file included and which library functions it
+/// calls, link with that problem's runner loop. A failure costs that problem only and is
+/// reported with the file, the line and the compiler's first error.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace opspace::grading {
+
+/// How CMake compiles and links a runner (the file tests/graded/CMakeLists.txt generates).
+struct Toolchain {
+  std::vector<std::string> compile;  ///< compiler and flags; the grader adds -c FILE -o OBJECT
+  std::vector<std::string> link;     ///< compiler and flags; the grader adds OBJECT, the inputs, -o
+  /// Per problem key: the link inputs after the object (the runner loop, the library).
+  std::vector<std::pair<std::string, std::vector<std::string>>> inputs;
+  std::vector<std::string> include_roots;  ///< folders a student's file may include from
+  std::vector<std::string> visible;        ///< what the compiler and linker must see (read-only)
+  std::string nm;                          ///< the nm program
+  std::string fingerprint;                 ///< changes when any of the above changes
+};
+
+/// Reads the toolchain file. Throws std::runtime_error naming the file and line on bad input.
+Toolchain load_toolchain(const std::string& path);
+
+/// A library function that computes an answer the student must write: calling it costs the
+/// tests listed.
+struct Oracle {
+  std::string prefix;              ///< start of the demangled name, e.g. "opspace::pp::"
+  std::string what;                ///< what it computes, for the report
+  std::vector<std::string> tests;  ///< names of the tests it answers (empty: all of the problem's)
+};
+
+/// The oracles of problem `key` (docs/grader.md lists them for students).
+std::vector<Oracle> oracles(const std::string& key);
+
+/// Where and how to build.
+struct BuildSettings {
+  std::string cache_dir;   ///< built runners are kept here, by the hash of their inputs
+  std::string user;        ///< when the grader is root: the user that compiles
+  bool isolate = true;     ///< the sandbox (false: debugging only)
+  double timeout = 180.0;  ///< seconds for each of compiling and linking
+};
+
+/// The outcome of building one problem's runner.
+struct BuiltRunner {
+  bool ok = false;
+  std::string binary;                 ///< the runner (in the cache), when ok
+  std::string error;                  ///< why not: "exercises/p1b.cpp:12: error: ..."
+  std::string warnings;               ///< the compiler's warnings, cut short
+  std::vector<std::string> calls;     ///< forbidden calls: "opspace::pp::mass_matrix(double, double)"
+  std::vector<Oracle> called;         ///< the oracles those calls belong to
+  bool cached = false;                ///< reused from an earlier build of the same inputs
+};
+
+/// Builds problem `key`'s runner from `source` (shown to the student as `shown_as`).
+BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, const std::string& source,
+                         const std::string& shown_as, const BuildSettings& settings);
+
+}  // namespace opspace::grading

@@ -1,0 +1,216 @@
+#include "runner_process.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+namespace opspace::grading {
+
+namespace {
+
+// Resource limits of a runner. A runner holds a few fixed-size matrices: 1 GiB of address
+// space is far more than it needs (AddressSanitizer reserves terabytes, so sanitized builds
+// go without). CPU time: a problem's runner lives for all its tests; the wall-clock deadline
+// of each test is the real bound, this one only stops a runaway that the deadline missed.
+Limits runner_limits(double timeout_seconds) {
+  Limits l;
+#if !defined(__SANITIZE_ADDRESS__)
+  l.address_space = 1ull << 30;
+#endif
+  l.cpu_seconds = static_cast<unsigned long long>(std::max(60.0, 10.0 * timeout_seconds));
+  l.file_size = 1ull << 20;
+  l.open_files = 16;
+  l.processes = 64;
+  return l;
+}
+
+void close_fd(int& fd) {
+  if (fd >= 0) close(fd);
+  fd = -1;
+}
+
+std::string seconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g s", s);
+  return buffer;
+}
+
+}  // namespace
+
+std::string sanitize(const std::string& text, std::size_t limit, std::size_t total) {
+  std::string out = text.substr(0, limit);
+  for (char& c : out) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) c = '?';
+  }
+  if (total > out.size()) out += "\n[... " + std::to_string(total - out.size()) + " more bytes not shown]";
+  return out;
+}
+
+RunnerProcess::RunnerProcess(RunnerConfig config) : config_(std::move(config)) {}
+
+RunnerProcess::~RunnerProcess() { stop(); }
+
+void RunnerProcess::begin_test(std::chrono::steady_clock::time_point deadline, double timeout_seconds) {
+  deadline_ = deadline;
+  timeout_seconds_ = timeout_seconds;
+  failure_.clear();
+  printed_ = Printed{};
+}
+
+Printed RunnerProcess::end_test() {
+  if (running_ && print_fd_ >= 0) drain_prints(print_fd_);
+  if (!failure_.empty()) stop();
+  Printed out = std::move(printed_);
+  printed_ = Printed{};
+  return out;
+}
+
+void RunnerProcess::start() {
+  int request[2], answer[2], prints[2];
+  if (pipe2(request, O_CLOEXEC) != 0) fail("the grader could not create a pipe");
+  if (pipe2(answer, O_CLOEXEC) != 0) {
+    close(request[0]), close(request[1]);
+    fail("the grader could not create a pipe");
+  }
+  if (pipe2(prints, O_CLOEXEC) != 0) {
+    close(request[0]), close(request[1]), close(answer[0]), close(answer[1]);
+    fail("the grader could not create a pipe");
+  }
+  SandboxSpec spec;
+  spec.argv = {config_.binary};
+  spec.env = config_.env;
+  spec.work_dir = config_.work_dir;
+  spec.user = config_.user;
+  spec.isolate = config_.isolate;
+  spec.limits = runner_limits(timeout_seconds_);
+  spec.fds = {{0, open("/dev/null", O_RDONLY | O_CLOEXEC)},
+              {1, prints[1]},
+              {2, prints[1]},
+              {protocol::kRequestFd, request[0]},
+              {protocol::kAnswerFd, answer[1]}};
+  try {
+    program_ = spawn(spec);
+  } catch (const std::exception& e) {
+    for (int fd : {spec.fds[0].second, request[0], request[1], answer[0], answer[1], prints[0], prints[1]}) close(fd);
+    fail(std::string("the grader could not start your code: ") + e.what());
+  }
+  for (int fd : {spec.fds[0].second, request[0], answer[1], prints[1]}) close(fd);
+  request_fd_ = request[1];
+  answer_fd_ = answer[0];
+  print_fd_ = prints[0];
+  fcntl(print_fd_, F_SETFL, O_NONBLOCK);
+  protections_ = program_.protections;
+  running_ = true;
+  ++starts_;
+}
+
+void RunnerProcess::stop() {
+  close_fd(request_fd_);
+  close_fd(answer_fd_);
+  close_fd(print_fd_);
+  if (running_) kill_all(program_);
+  running_ = false;
+}
+
+void RunnerProcess::fail(const std::string& what) {
+  if (failure_.empty()) failure_ = what;
+  stop();
+  throw RunnerFailure(failure_);
+}
+
+std::string RunnerProcess::ended_how() {
+  // The answer pipe closed: the runner ended (or closed it and lives on: then it is killed).
+  int status = 0;
+  if (!wait_until(program_, std::chrono::steady_clock::now() + std::chrono::milliseconds(500), status)) {
+    status = kill_all(program_);
+    return "your code closed its connection to the grader and kept running";
+  }
+  running_ = false;
+  if (WIFEXITED(status)) {
+    return "your code ended the program (exit code " + std::to_string(WEXITSTATUS(status)) +
+           ", e.g. an exit() or abort-free return from main) before answering";
+  }
+  return "your code " + describe_wait_status(status);
+}
+
+void RunnerProcess::drain_prints(int fd) {
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = read(fd, buffer, sizeof buffer);
+    if (n <= 0) return;
+    const std::size_t keep = std::min<std::size_t>(static_cast<std::size_t>(n), kMaxPrinted - std::min(kMaxPrinted, printed_.text.size()));
+    printed_.text.append(buffer, keep);
+    printed_.total += static_cast<std::size_t>(n);
+  }
+}
+
+void RunnerProcess::read_answer(void* out, std::size_t size) {
+  auto* p = static_cast<unsigned char*>(out);
+  while (size > 0) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - std::chrono::steady_clock::now());
+    if (left.count() <= 0) {
+      fail("your code did not answer within " + seconds(timeout_seconds_) + " (an endless loop?)");
+    }
+    pollfd fds[2] = {{answer_fd_, POLLIN, 0}, {print_fd_, POLLIN, 0}};
+    const int ready = poll(fds, 2, static_cast<int>(std::min<long long>(left.count(), 1000)));
+    if (ready < 0 && errno != EINTR) fail("the grader could not wait for your code");
+    if (ready <= 0) continue;
+    if (fds[1].revents & POLLIN) drain_prints(print_fd_);
+    if (fds[1].revents & (POLLHUP | POLLERR) && !(fds[1].revents & POLLIN)) fds[1].fd = -1;
+    if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+    const ssize_t n = read(answer_fd_, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail(ended_how());
+    p += n;
+    size -= static_cast<std::size_t>(n);
+  }
+}
+
+std::vector<unsigned char> RunnerProcess::call(protocol::Function function, const std::vector<unsigned char>& arguments,
+                                               std::size_t value_size) {
+  if (!failure_.empty()) throw RunnerFailure(failure_);
+  if (!running_) start();
+  const protocol::Header request{protocol::kRequestMagic, ++sequence_, static_cast<std::uint32_t>(function),
+                                 static_cast<std::uint32_t>(arguments.size())};
+  std::vector<unsigned char> message(sizeof request + arguments.size());
+  std::memcpy(message.data(), &request, sizeof request);
+  std::copy(arguments.begin(), arguments.end(), message.begin() + sizeof request);
+  // A request is a few kilobytes, less than a pipe holds: it cannot block for long, and a
+  // runner that no longer reads fails the write (EPIPE) when it is gone.
+  for (std::size_t sent = 0; sent < message.size();) {
+    const ssize_t n = write(request_fd_, message.data() + sent, message.size() - sent);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail(ended_how());
+    sent += static_cast<std::size_t>(n);
+  }
+
+  protocol::Header answer;
+  read_answer(&answer, sizeof answer);
+  if (answer.magic != protocol::kAnswerMagic) fail("your code wrote something that is not an answer on the grader's channel");
+  if (answer.sequence != request.sequence)
+    fail("your code sent an answer to request " + std::to_string(answer.sequence) + " while the grader asked request " +
+         std::to_string(request.sequence));
+  const auto status = static_cast<protocol::Status>(answer.code);
+  if (status == protocol::Status::kException) {
+    if (answer.size > protocol::kMaxExceptionText) fail("your code sent an exception text longer than allowed");
+    std::string text(answer.size, '\0');
+    read_answer(text.data(), text.size());
+    throw StudentException("your code threw an exception: " + sanitize(text, 200, text.size()));
+  }
+  if (status != protocol::Status::kValue) fail("your code's runner did not know the function it was asked for");
+  if (answer.size != value_size)
+    fail("your code sent " + std::to_string(answer.size) + " bytes where the answer has " + std::to_string(value_size));
+  std::vector<unsigned char> value(value_size);
+  read_answer(value.data(), value.size());
+  return value;
+}
+
+}  // namespace opspace::grading

@@ -1,0 +1,103 @@
+/// @file runner_process.hpp
+/// The grader's handle on one problem's runner: it starts the runner in the sandbox, sends
+/// requests and reads answers under the test's deadline, collects what the student's code
+/// prints, and restarts the runner for the next test after a crash, a time-out, an exit or a
+/// malformed answer. Everything read from the runner is checked before it is used.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "protocol/protocol.hpp"
+#include "sandbox.hpp"
+
+namespace opspace::grading {
+
+/// The runner cannot answer any more in this test: it crashed, exited, ran out of time or
+/// sent something malformed. what() says which, in words for the student.
+class RunnerFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The student's function threw; what() is "your code threw an exception: <its text>",
+/// the text cut short and stripped of control characters.
+class StudentException : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// How to start a runner.
+struct RunnerConfig {
+  std::string binary;    ///< absolute path of the runner program
+  std::string work_dir;  ///< the folder it runs in (read-only), holding the binary
+  std::string user;      ///< when the grader is root: the unprivileged user it runs as
+  bool isolate = true;   ///< the sandbox's namespaces, limits and filter (sandbox.hpp)
+  std::vector<std::string> env;  ///< its environment (empty, or the sanitizers' options)
+};
+
+/// What the student's code printed during one test: the first bytes and the total count.
+struct Printed {
+  std::string text;        ///< at most kMaxPrinted bytes, as printed
+  std::size_t total = 0;   ///< how many bytes were printed in all
+};
+
+/// One problem's runner, started on the first request.
+class RunnerProcess {
+ public:
+  static constexpr std::size_t kMaxPrinted = 2000;  ///< bytes of prints kept per test
+
+  explicit RunnerProcess(RunnerConfig config);
+  ~RunnerProcess();
+  RunnerProcess(const RunnerProcess&) = delete;
+  RunnerProcess& operator=(const RunnerProcess&) = delete;
+
+  /// Starts a test: its deadline, and a clean slate (no failure, no prints).
+  void begin_test(std::chrono::steady_clock::time_point deadline, double timeout_seconds);
+  /// Ends a test: kills the runner if it failed (the next test starts a new one); returns
+  /// what the student's code printed during it.
+  Printed end_test();
+  /// The failure of the current test, or empty.
+  const std::string& failure() const { return failure_; }
+
+  /// Sends `arguments` to `function` and returns the value's bytes, exactly `value_size` of
+  /// them. Throws RunnerFailure or StudentException.
+  std::vector<unsigned char> call(protocol::Function function, const std::vector<unsigned char>& arguments,
+                                  std::size_t value_size);
+
+  /// Kills the runner and everything it started.
+  void stop();
+  /// The protections of the last start (sandbox.hpp).
+  const Protections& protections() const { return protections_; }
+  /// How many times a runner was started.
+  int starts() const { return starts_; }
+
+ private:
+  void start();
+  [[noreturn]] void fail(const std::string& what);
+  // Reads exactly `size` bytes of the answer into `out`, draining the prints meanwhile.
+  void read_answer(void* out, std::size_t size);
+  void drain_prints(int fd_ready);
+  std::string ended_how();
+
+  RunnerConfig config_;
+  Sandboxed program_;
+  bool running_ = false;
+  int request_fd_ = -1, answer_fd_ = -1, print_fd_ = -1;
+  std::uint32_t sequence_ = 0;
+  std::chrono::steady_clock::time_point deadline_;
+  double timeout_seconds_ = 0.0;
+  std::string failure_;
+  Printed printed_;
+  Protections protections_;
+  int starts_ = 0;
+};
+
+/// Text the student's code produced, made safe to show: control characters (but newlines and
+/// tabs) become '?', and it is cut to `limit` bytes with a note of what was left out.
+std::string sanitize(const std::string& text, std::size_t limit, std::size_t total);
+
+}  // namespace opspace::grading

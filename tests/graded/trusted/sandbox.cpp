@@ -1,0 +1,594 @@
+// The sandbox of sandbox.hpp. Everything the child needs is prepared before clone(), so that
+// between clone() and execve() the child makes only system calls: the grader may be the
+// parent of several sandboxed programs, and the child must not depend on the C library's
+// state (locks, caches) inherited from it.
+#include "sandbox.hpp"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <grp.h>
+#include <linux/audit.h>
+#include <linux/filter.h>
+#include <linux/seccomp.h>
+#include <pwd.h>
+#include <sched.h>
+#include <signal.h>
+#include <sys/mount.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+namespace opspace::grading {
+
+namespace {
+
+// --- what the child does, prepared by the parent --------------------------------------------
+
+struct Mount {
+  std::string source;   // host path
+  std::string target;   // path inside the new root (absolute, prefixed with the root)
+  bool directory = true;
+  bool writable = false;
+  unsigned long flags = 0;  // the source's locked flags (nosuid, nodev, noexec), kept on remount
+  std::string link;     // non-empty: create a symbolic link to this instead of mounting
+  std::vector<std::string> make_dirs;  // created, in order, right before this mount
+};
+
+struct ChildPlan {
+  std::vector<std::string> argv_storage, env_storage;
+  std::vector<char*> argv, env;
+  std::vector<std::pair<int, int>> fds;
+  int error_fd = -1;
+  bool isolate = true;
+  bool user_namespace = false;  // maps its own uid and gid first
+  std::string uid_map, gid_map;  // "outer outer 1": its own ids, mapped onto themselves
+  bool mount_namespace = false;
+  bool pid_namespace = false;
+  std::string root;  // the new root's mount point
+  std::vector<Mount> mounts;
+  std::string work_dir;
+  bool drop_user = false;
+  uid_t uid = 0;
+  gid_t gid = 0;
+  Limits limits;
+  bool limit_processes = false;
+  std::vector<sock_filter> filter;
+  std::size_t filter_self_pid = 0;  // indices of instructions that compare with the own pid
+  std::size_t filter_self_pid2 = 0;
+  bool seccomp = false;
+};
+
+// Reports a failed step to the parent and exits; only system calls.
+[[noreturn]] void child_fail(const ChildPlan& plan, const char* step) {
+  const int error = errno;
+  char buffer[256];
+  std::size_t n = 0;
+  for (const char* p = step; *p && n < 120; ++p) buffer[n++] = *p;
+  const char* separator = ": ";
+  for (const char* p = separator; *p; ++p) buffer[n++] = *p;
+  // strerror may allocate on some systems; the error number is enough.
+  char digits[16];
+  int k = 0;
+  int e = error;
+  do {
+    digits[k++] = static_cast<char>('0' + e % 10);
+    e /= 10;
+  } while (e > 0 && k < 15);
+  const char* prefix = "errno ";
+  for (const char* p = prefix; *p; ++p) buffer[n++] = *p;
+  while (k > 0) buffer[n++] = digits[--k];
+  if (write(plan.error_fd, buffer, n) < 0) _exit(127);
+  _exit(127);
+}
+
+bool write_file(const char* path, const char* text) {
+  const int fd = open(path, O_WRONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const std::size_t size = std::strlen(text);
+  const bool ok = write(fd, text, size) == static_cast<ssize_t>(size);
+  close(fd);
+  return ok;
+}
+
+void child_mounts(const ChildPlan& plan) {
+  if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) child_fail(plan, "make / private");
+  if (mount("tmpfs", plan.root.c_str(), "tmpfs", MS_NOSUID | MS_NODEV, "size=1m,mode=0755") != 0)
+    child_fail(plan, "mount the new root");
+  for (const Mount& m : plan.mounts) {
+    for (const std::string& dir : m.make_dirs) {
+      if (mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST) child_fail(plan, "create a folder of the new root");
+    }
+    if (!m.link.empty()) {
+      if (symlink(m.link.c_str(), m.target.c_str()) != 0) child_fail(plan, "create a link in the new root");
+      continue;
+    }
+    if (m.source == "tmpfs") {
+      if (mount("tmpfs", m.target.c_str(), "tmpfs", MS_NOSUID | MS_NODEV, "size=512m,mode=1777") != 0)
+        child_fail(plan, "mount /tmp");
+      continue;
+    }
+    if (m.source == "proc") {
+      // Only inside a PID namespace (the parent plans it only then); optional.
+      mount("proc", m.target.c_str(), "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr);
+      continue;
+    }
+    if (!m.directory) {
+      const int fd = open(m.target.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+      if (fd < 0) child_fail(plan, "create a mount point in the new root");
+      close(fd);
+    }
+    if (mount(m.source.c_str(), m.target.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0)
+      child_fail(plan, "bind a visible path");
+    if (!m.writable &&
+        mount(nullptr, m.target.c_str(), nullptr, MS_REMOUNT | MS_BIND | MS_RDONLY | m.flags, nullptr) != 0)
+      child_fail(plan, "make a visible path read-only");
+  }
+  if (chdir(plan.root.c_str()) != 0 || chroot(".") != 0) child_fail(plan, "enter the new root");
+}
+
+void child_limits(const ChildPlan& plan) {
+  auto set = [&plan](int resource, unsigned long long value, const char* what) {
+    if (value == 0) return;
+    rlimit limit{value, value};
+    if (resource == RLIMIT_CPU) limit.rlim_max = value + 1;  // SIGXCPU first, then SIGKILL
+    if (setrlimit(resource, &limit) != 0) child_fail(plan, what);
+  };
+  set(RLIMIT_AS, plan.limits.address_space, "limit the address space");
+  set(RLIMIT_CPU, plan.limits.cpu_seconds, "limit the CPU time");
+  set(RLIMIT_FSIZE, plan.limits.file_size, "limit the file size");
+  set(RLIMIT_NOFILE, plan.limits.open_files, "limit the open files");
+  if (plan.limit_processes) set(RLIMIT_NPROC, plan.limits.processes, "limit the processes");
+  rlimit no_core{0, 0};
+  if (setrlimit(RLIMIT_CORE, &no_core) != 0) child_fail(plan, "forbid core files");
+}
+
+void child_descriptors(ChildPlan& plan) {
+  // Move the error pipe and the sources out of the way first: one may have a target's number.
+  plan.error_fd = fcntl(plan.error_fd, F_DUPFD_CLOEXEC, 900);
+  if (plan.error_fd < 0) _exit(127);
+  int moved[16];
+  const std::size_t count = std::min<std::size_t>(plan.fds.size(), 16);
+  for (std::size_t i = 0; i < count; ++i) {
+    moved[i] = fcntl(plan.fds[i].second, F_DUPFD_CLOEXEC, 700);
+    if (moved[i] < 0) child_fail(plan, "move a descriptor");
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    if (dup2(moved[i], plan.fds[i].first) < 0) child_fail(plan, "set a descriptor");
+  }
+  // Close everything else but the error pipe (close-on-exec, it reports exec's failure).
+  for (int fd = 0; fd < 1024; ++fd) {
+    bool keep = fd == plan.error_fd;
+    for (std::size_t i = 0; i < count; ++i) keep = keep || fd == plan.fds[i].first;
+    if (!keep) close(fd);
+  }
+}
+
+[[noreturn]] void child_main(ChildPlan& plan) {
+  if (plan.user_namespace) {
+    // Map our own ids into the new user namespace: execve then drops the capabilities this
+    // process holds there, since its uid is not 0.
+    if (!write_file("/proc/self/uid_map", plan.uid_map.c_str())) child_fail(plan, "map the user id");
+    if (!write_file("/proc/self/setgroups", "deny")) child_fail(plan, "deny setgroups");
+    if (!write_file("/proc/self/gid_map", plan.gid_map.c_str())) child_fail(plan, "map the group id");
+  }
+  if (setsid() < 0) child_fail(plan, "start a new session");
+  if (plan.isolate && plan.mount_namespace) child_mounts(plan);
+  if (chdir(plan.work_dir.c_str()) != 0) child_fail(plan, "enter the work folder");
+  child_descriptors(plan);
+  if (plan.isolate) child_limits(plan);
+  if (plan.drop_user) {
+    if (setgroups(0, nullptr) != 0) child_fail(plan, "drop the supplementary groups");
+    if (setresgid(plan.gid, plan.gid, plan.gid) != 0) child_fail(plan, "change group");
+    if (setresuid(plan.uid, plan.uid, plan.uid) != 0) child_fail(plan, "change user");
+    if (setuid(0) == 0) child_fail(plan, "the user change did not hold");
+  }
+  // Die with the grader (after the user change, which resets this setting).
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (plan.seccomp) {
+    const long self = syscall(SYS_getpid);
+    plan.filter[plan.filter_self_pid].k = static_cast<std::uint32_t>(self);
+    plan.filter[plan.filter_self_pid2].k = static_cast<std::uint32_t>(self);
+    sock_fprog program{static_cast<unsigned short>(plan.filter.size()), plan.filter.data()};
+    if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) child_fail(plan, "set no_new_privs");
+    if (prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &program) != 0) child_fail(plan, "install the seccomp filter");
+  }
+  execve(plan.argv[0], plan.argv.data(), plan.env.data());
+  child_fail(plan, "start the program");
+}
+
+// --- the seccomp filter (x86_64) -------------------------------------------------------------
+
+#if defined(__x86_64__)
+constexpr std::uint32_t kArch = AUDIT_ARCH_X86_64;
+constexpr bool kHaveFilter = true;
+#else
+constexpr std::uint32_t kArch = 0;
+constexpr bool kHaveFilter = false;
+#endif
+
+std::uint32_t arg0() { return static_cast<std::uint32_t>(offsetof(seccomp_data, args)); }
+
+// Denied with EPERM: tracing and reading other processes, kernel interfaces a runner has no
+// use for, and changing the sandbox itself.
+std::vector<long> denied_syscalls() {
+  std::vector<long> out = {SYS_ptrace,       SYS_process_vm_readv, SYS_process_vm_writev, SYS_tkill,
+                           SYS_mount,        SYS_umount2,          SYS_pivot_root,        SYS_chroot,
+                           SYS_unshare,      SYS_setns,            SYS_bpf,               SYS_perf_event_open,
+                           SYS_userfaultfd,  SYS_keyctl,           SYS_add_key,           SYS_request_key,
+                           SYS_kexec_load,   SYS_init_module,      SYS_finit_module,      SYS_delete_module};
+#ifdef SYS_io_uring_setup
+  out.insert(out.end(), {SYS_io_uring_setup, SYS_io_uring_enter, SYS_io_uring_register});
+#endif
+#ifdef SYS_pidfd_send_signal
+  out.push_back(SYS_pidfd_send_signal);
+#endif
+#ifdef SYS_pidfd_getfd
+  out.push_back(SYS_pidfd_getfd);
+#endif
+  return out;
+}
+
+void build_filter(ChildPlan& plan) {
+  std::vector<sock_filter>& f = plan.filter;
+  auto stmt = [&f](std::uint16_t code, std::uint32_t k) { f.push_back(BPF_STMT(code, k)); };
+  auto jump = [&f](std::uint16_t code, std::uint32_t k, std::uint8_t jt, std::uint8_t jf) {
+    f.push_back(BPF_JUMP(code, k, jt, jf));
+  };
+  const std::uint32_t allow = SECCOMP_RET_ALLOW;
+  const std::uint32_t kill = SECCOMP_RET_KILL_PROCESS;
+  const std::uint32_t eperm = SECCOMP_RET_ERRNO | EPERM;
+  stmt(BPF_LD | BPF_W | BPF_ABS, static_cast<std::uint32_t>(offsetof(seccomp_data, arch)));
+  jump(BPF_JMP | BPF_JEQ | BPF_K, kArch, 1, 0);
+  stmt(BPF_RET | BPF_K, kill);
+  stmt(BPF_LD | BPF_W | BPF_ABS, static_cast<std::uint32_t>(offsetof(seccomp_data, nr)));
+  jump(BPF_JMP | BPF_JGE | BPF_K, 0x40000000u, 0, 1);  // the x32 ABI
+  stmt(BPF_RET | BPF_K, kill);
+  for (long nr : denied_syscalls()) {
+    jump(BPF_JMP | BPF_JEQ | BPF_K, static_cast<std::uint32_t>(nr), 0, 1);
+    stmt(BPF_RET | BPF_K, eperm);
+  }
+  // socket(domain, ...): AF_UNIX only (no network, whatever the namespaces).
+  jump(BPF_JMP | BPF_JEQ | BPF_K, SYS_socket, 0, 4);
+  stmt(BPF_LD | BPF_W | BPF_ABS, arg0());
+  jump(BPF_JMP | BPF_JEQ | BPF_K, AF_UNIX, 0, 1);
+  stmt(BPF_RET | BPF_K, allow);
+  stmt(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | EACCES);
+  // kill(pid, sig): only its own process group (0) or itself.
+  jump(BPF_JMP | BPF_JEQ | BPF_K, SYS_kill, 0, 5);
+  stmt(BPF_LD | BPF_W | BPF_ABS, arg0());
+  jump(BPF_JMP | BPF_JEQ | BPF_K, 0, 2, 0);
+  plan.filter_self_pid = f.size();
+  jump(BPF_JMP | BPF_JEQ | BPF_K, 0, 1, 0);  // k = its pid, set in the child
+  stmt(BPF_RET | BPF_K, eperm);
+  stmt(BPF_RET | BPF_K, allow);
+  // tgkill(tgid, tid, sig): only itself (abort() and raise() use it).
+  jump(BPF_JMP | BPF_JEQ | BPF_K, SYS_tgkill, 0, 4);
+  stmt(BPF_LD | BPF_W | BPF_ABS, arg0());
+  plan.filter_self_pid2 = f.size();
+  jump(BPF_JMP | BPF_JEQ | BPF_K, 0, 0, 1);  // k = its pid, set in the child
+  stmt(BPF_RET | BPF_K, allow);
+  stmt(BPF_RET | BPF_K, eperm);
+  stmt(BPF_RET | BPF_K, allow);
+}
+
+// --- the new root ----------------------------------------------------------------------------
+
+unsigned long locked_flags(const std::string& path) {
+  struct statvfs s {};
+  if (statvfs(path.c_str(), &s) != 0) return 0;
+  unsigned long flags = 0;
+  if (s.f_flag & ST_NOSUID) flags |= MS_NOSUID;
+  if (s.f_flag & ST_NODEV) flags |= MS_NODEV;
+  if (s.f_flag & ST_NOEXEC) flags |= MS_NOEXEC;
+  if (s.f_flag & ST_NOATIME) flags |= MS_NOATIME;
+  if (s.f_flag & ST_NODIRATIME) flags |= MS_NODIRATIME;
+  if (s.f_flag & ST_RELATIME) flags |= MS_RELATIME;
+  return flags;
+}
+
+// The folders above `path` in the new root, outermost first.
+std::vector<std::string> parents(const std::string& root, const std::string& path) {
+  std::vector<std::string> out;
+  for (std::size_t slash = path.find('/', 1); slash != std::string::npos; slash = path.find('/', slash + 1))
+    out.push_back(root + path.substr(0, slash));
+  return out;
+}
+
+void add_mount(ChildPlan& plan, const std::string& path, bool writable) {
+  struct stat s {};
+  if (lstat(path.c_str(), &s) != 0) return;  // absent on this machine: nothing to show
+  Mount m;
+  m.source = path;
+  m.target = plan.root + path;
+  m.writable = writable;
+  m.make_dirs = parents(plan.root, path);
+  if (S_ISLNK(s.st_mode)) {
+    char target[4096];
+    const ssize_t n = readlink(path.c_str(), target, sizeof target - 1);
+    if (n <= 0) return;
+    m.link.assign(target, static_cast<std::size_t>(n));
+  } else {
+    m.directory = S_ISDIR(s.st_mode);
+    m.flags = locked_flags(path);
+    if (m.directory) m.make_dirs.push_back(m.target);
+  }
+  plan.mounts.push_back(m);
+}
+
+void add_special(ChildPlan& plan, const std::string& path, const char* kind) {
+  Mount m;
+  m.source = kind;
+  m.target = plan.root + path;
+  m.make_dirs = parents(plan.root, path);
+  m.make_dirs.push_back(m.target);
+  plan.mounts.push_back(m);
+}
+
+// One empty folder per grader process: each sandbox mounts its new root there, in its own
+// mount namespace, so the folder stays empty outside. Removed when the grader exits.
+char g_root[64] = "";
+void remove_root() {
+  if (g_root[0]) rmdir(g_root);
+}
+std::string root_mount_point() {
+  if (!g_root[0]) {
+    char pattern[] = "/tmp/opspace-sandbox-XXXXXX";
+    if (!mkdtemp(pattern)) throw std::runtime_error(std::string("cannot create a sandbox folder in /tmp: ") + std::strerror(errno));
+    std::snprintf(g_root, sizeof g_root, "%s", pattern);
+    std::atexit(remove_root);
+  }
+  return g_root;
+}
+
+void plan_root(ChildPlan& plan, const SandboxSpec& spec) {
+  plan.root = root_mount_point();
+  for (const char* system : {"/usr", "/etc", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"})
+    add_mount(plan, system, false);
+  for (const char* device : {"/dev/null", "/dev/zero", "/dev/urandom", "/dev/random"}) add_mount(plan, device, true);
+  add_special(plan, "/tmp", "tmpfs");
+  if (plan.pid_namespace) add_special(plan, "/proc", "proc");
+  for (const std::string& path : spec.visible) add_mount(plan, path, false);
+  add_mount(plan, spec.work_dir, spec.work_dir_writable);
+}
+
+// --- the live programs, for kill_all() -------------------------------------------------------
+
+// The grader builds several runners at once (threads): spawn(), the waits and the search for
+// orphans share the list of live programs under this lock, so that a program just started by
+// one thread is never taken for an orphan by another.
+std::mutex& programs_lock() {
+  static std::mutex lock;
+  return lock;
+}
+
+std::set<pid_t>& live_programs() {
+  static std::set<pid_t> programs;
+  return programs;
+}
+
+void forget(pid_t pid) {
+  const std::lock_guard<std::mutex> hold(programs_lock());
+  live_programs().erase(pid);
+}
+
+// The processes whose parent is the grader and which are not its live programs (call with
+// the lock held).
+std::vector<pid_t> orphans() {
+  std::vector<pid_t> out;
+  DIR* proc = opendir("/proc");
+  if (!proc) return out;
+  const pid_t self = getpid();
+  while (const dirent* entry = readdir(proc)) {
+    const pid_t pid = static_cast<pid_t>(std::atoi(entry->d_name));
+    if (pid <= 0 || live_programs().count(pid)) continue;
+    char path[64];
+    std::snprintf(path, sizeof path, "/proc/%d/stat", static_cast<int>(pid));
+    FILE* file = std::fopen(path, "r");
+    if (!file) continue;
+    char line[512] = {};
+    const bool read = std::fgets(line, sizeof line, file) != nullptr;
+    std::fclose(file);
+    if (!read) continue;
+    // "pid (comm) state ppid ...": comm may hold spaces and parentheses, so read after the last ')'.
+    const char* close = std::strrchr(line, ')');
+    char state = 0;
+    int ppid = 0;
+    if (close && std::sscanf(close + 1, " %c %d", &state, &ppid) == 2 && ppid == self) out.push_back(pid);
+  }
+  closedir(proc);
+  return out;
+}
+
+// Kills and reaps every process re-parented to the grader that is not a live program of its
+// own: what sandboxed programs left behind (detached, double-forked).
+void reap_orphans() {
+  const std::lock_guard<std::mutex> hold(programs_lock());
+  for (int round = 0; round < 1000; ++round) {
+    const std::vector<pid_t> stray = orphans();
+    for (pid_t pid : stray) kill(pid, SIGKILL);
+    for (pid_t pid : stray) waitpid(pid, nullptr, 0);
+    if (stray.empty()) return;
+  }
+}
+
+}  // namespace
+
+std::string Protections::missing() const {
+  std::string out;
+  auto add = [&out](bool on, const char* what) {
+    if (!on) out += (out.empty() ? "" : ", ") + std::string(what);
+  };
+  add(own_user, "a separate user");
+  add(pid_namespace, "a PID namespace");
+  add(no_network, "a network namespace");
+  add(private_files, "a private view of the files");
+  add(seccomp, "the system-call filter");
+  add(limits, "resource limits");
+  return out;
+}
+
+void become_subreaper() {
+  prctl(PR_SET_CHILD_SUBREAPER, 1);
+  signal(SIGPIPE, SIG_IGN);
+}
+
+std::string default_sandbox_user() {
+  if (geteuid() != 0) return "";
+  if (const char* user = std::getenv("OPSPACE_SANDBOX_USER")) return user;
+  return getpwnam("opspace-runner") ? "opspace-runner" : "nobody";
+}
+
+std::string describe_wait_status(int status) {
+  char buffer[160];
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    std::snprintf(buffer, sizeof buffer, "crashed: %s (signal %d)%s", strsignal(sig), sig,
+                  sig == SIGSEGV ? ", e.g. an out-of-range index or a bad pointer"
+                  : sig == SIGXCPU ? ": it used up its CPU time"
+                  : sig == SIGXFSZ ? ": it wrote a file larger than allowed"
+                                   : "");
+  } else if (WIFEXITED(status)) {
+    std::snprintf(buffer, sizeof buffer, "exited with code %d", WEXITSTATUS(status));
+  } else {
+    std::snprintf(buffer, sizeof buffer, "ended with status %d", status);
+  }
+  return buffer;
+}
+
+Sandboxed spawn(const SandboxSpec& spec) {
+  if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/')
+    throw std::invalid_argument("sandbox: the program needs an absolute path");
+  ChildPlan plan;
+  plan.argv_storage = spec.argv;
+  plan.env_storage = spec.env;
+  for (std::string& a : plan.argv_storage) plan.argv.push_back(a.data());
+  plan.argv.push_back(nullptr);
+  for (std::string& e : plan.env_storage) plan.env.push_back(e.data());
+  plan.env.push_back(nullptr);
+  plan.fds = spec.fds;
+  plan.work_dir = spec.work_dir;
+  plan.isolate = spec.isolate;
+  plan.limits = spec.limits;
+  plan.uid_map = std::to_string(geteuid()) + " " + std::to_string(geteuid()) + " 1";
+  plan.gid_map = std::to_string(getegid()) + " " + std::to_string(getegid()) + " 1";
+
+  Protections on;
+  if (spec.isolate && spec.user.empty() && geteuid() == 0)
+    throw std::invalid_argument("sandbox: a root grader must name the user that runs student code");
+  if (spec.isolate && !spec.user.empty() && geteuid() == 0) {
+    const passwd* pw = getpwnam(spec.user.c_str());
+    if (!pw) throw std::runtime_error("sandbox: no user '" + spec.user + "' on this machine");
+    if (pw->pw_uid == 0) throw std::runtime_error("sandbox: user '" + spec.user + "' is root");
+    plan.drop_user = true;
+    plan.uid = pw->pw_uid;
+    plan.gid = pw->pw_gid;
+    on.own_user = true;
+    plan.limit_processes = true;
+  }
+  if (spec.isolate) {
+    on.limits = true;
+    if (kHaveFilter) {
+      build_filter(plan);
+      plan.seccomp = on.seccomp = true;
+    }
+  }
+
+  int error_pipe[2];
+  if (pipe2(error_pipe, O_CLOEXEC) != 0) throw std::runtime_error("sandbox: no pipe");
+  plan.error_fd = error_pipe[1];
+
+  // Namespaces, from the most to the least: as root directly, else through a user namespace,
+  // else none (a laptop without user namespaces, a container that forbids them).
+  const unsigned long namespaces = CLONE_NEWPID | CLONE_NEWNET | CLONE_NEWNS | CLONE_NEWIPC | CLONE_NEWUTS;
+  std::vector<unsigned long> attempts;
+  if (spec.isolate) {
+    if (geteuid() == 0) attempts.push_back(namespaces);
+    attempts.push_back(namespaces | CLONE_NEWUSER);
+  }
+  attempts.push_back(0);
+  std::fflush(nullptr);
+  std::unique_lock<std::mutex> hold(programs_lock());
+  long pid = -1;
+  for (unsigned long flags : attempts) {
+    plan.user_namespace = (flags & CLONE_NEWUSER) != 0;
+    plan.mount_namespace = plan.pid_namespace = (flags & CLONE_NEWNS) != 0;
+    plan.mounts.clear();
+    if (plan.mount_namespace) plan_root(plan, spec);
+    pid = syscall(SYS_clone, flags | SIGCHLD, nullptr, nullptr, nullptr, nullptr);
+    if (pid == 0) child_main(plan);
+    if (pid > 0) {
+      on.pid_namespace = on.no_network = on.private_files = flags != 0;
+      break;
+    }
+  }
+  if (pid > 0) live_programs().insert(static_cast<pid_t>(pid));
+  hold.unlock();
+  close(error_pipe[1]);
+  if (pid < 0) {
+    close(error_pipe[0]);
+    throw std::runtime_error(std::string("sandbox: cannot start a process: ") + std::strerror(errno));
+  }
+  char message[256];
+  ssize_t n;
+  do {
+    n = read(error_pipe[0], message, sizeof message - 1);
+  } while (n < 0 && errno == EINTR);
+  close(error_pipe[0]);
+  if (n > 0) {
+    message[n] = '\0';
+    waitpid(static_cast<pid_t>(pid), nullptr, 0);
+    forget(static_cast<pid_t>(pid));
+    throw std::runtime_error("sandbox: cannot " + std::string(message) + " (" + spec.argv[0] + ")");
+  }
+  return Sandboxed{static_cast<pid_t>(pid), on};
+}
+
+bool wait_until(const Sandboxed& program, std::chrono::steady_clock::time_point deadline, int& status) {
+  auto pause = std::chrono::microseconds(100);
+  for (;;) {
+    const pid_t done = waitpid(program.pid, &status, WNOHANG);
+    if (done == program.pid || (done < 0 && errno == ECHILD)) {
+      forget(program.pid);
+      reap_orphans();
+      return true;
+    }
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::microseconds(5000));
+  }
+}
+
+int kill_all(const Sandboxed& program) {
+  int status = 0;
+  bool live = false;
+  {
+    const std::lock_guard<std::mutex> hold(programs_lock());
+    live = live_programs().count(program.pid) > 0;
+  }
+  if (live) {
+    kill(program.pid, SIGKILL);
+    while (waitpid(program.pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    forget(program.pid);
+  }
+  reap_orphans();
+  return status;
+}
+
+}  // namespace opspace::grading

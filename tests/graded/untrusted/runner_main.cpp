@@ -1,0 +1,79 @@
+// The runner's loop: read a request on fd 3, evaluate it, answer on fd 4, until the grader
+// closes fd 3. An exception thrown by the student's code is sent back as text; anything else
+// (a crash, an exit) is the grader's to notice.
+#include <unistd.h>
+
+#include <cerrno>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "serve.hpp"
+
+namespace {
+
+using opspace::protocol::Header;
+
+bool read_exact(int fd, void* data, std::size_t size) {
+  auto* p = static_cast<unsigned char*>(data);
+  while (size > 0) {
+    const ssize_t n = read(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+bool write_exact(int fd, const void* data, std::size_t size) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  while (size > 0) {
+    const ssize_t n = write(fd, p, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+bool answer(std::uint32_t sequence, opspace::protocol::Status status, const std::vector<unsigned char>& payload) {
+  const Header header{opspace::protocol::kAnswerMagic, sequence, static_cast<std::uint32_t>(status),
+                      static_cast<std::uint32_t>(payload.size())};
+  return write_exact(opspace::protocol::kAnswerFd, &header, sizeof header) &&
+         write_exact(opspace::protocol::kAnswerFd, payload.data(), payload.size());
+}
+
+}  // namespace
+
+int main() {
+  namespace protocol = opspace::protocol;
+  std::vector<unsigned char> payload;
+  for (;;) {
+    Header request;
+    if (!read_exact(protocol::kRequestFd, &request, sizeof request)) return 0;  // the grader is done
+    if (request.magic != protocol::kRequestMagic || request.size > protocol::kMaxPayload) return 3;
+    payload.resize(request.size);
+    if (!read_exact(protocol::kRequestFd, payload.data(), payload.size())) return 3;
+    protocol::Reader in(payload.data(), payload.size());
+    protocol::Writer out;
+    protocol::Status status = protocol::Status::kValue;
+    try {
+      if (!opspace::runner::dispatch(static_cast<protocol::Function>(request.code), in, out))
+        status = protocol::Status::kUnknownFunction;
+    } catch (const std::exception& e) {
+      status = protocol::Status::kException;
+      const std::string text = std::string(e.what()).substr(0, protocol::kMaxExceptionText);
+      out = protocol::Writer();
+      out.raw(text.data(), text.size());
+    } catch (...) {
+      status = protocol::Status::kException;
+      const std::string text = "an exception that is not a std::exception";
+      out = protocol::Writer();
+      out.raw(text.data(), text.size());
+    }
+    if (!answer(request.sequence, status, status == protocol::Status::kUnknownFunction ? std::vector<unsigned char>() : out.bytes()))
+      return 0;
+  }
+}

@@ -1,0 +1,28 @@
+/// @file serve.hpp
+/// The untrusted side: a runner is one problem's exercise file plus this loop. It evaluates
+/// the student's functions on the arguments the grader sends and returns the raw values; it
+/// decides nothing. Everything here runs in the sandbox, as the student's code does.
+#pragma once
+
+#include <tuple>
+#include <type_traits>
+
+#include "protocol/codec.hpp"
+#include "protocol/protocol.hpp"
+
+namespace opspace::runner {
+
+/// Decodes the arguments of `fn` from `in`, calls it, encodes its value into `out`.
+template <class R, class... A>
+void serve(R (*fn)(A...), protocol::Reader& in, protocol::Writer& out) {
+  std::tuple<std::decay_t<A>...> args;
+  std::apply([&in](auto&... a) { (protocol::get(in, a), ...); }, args);
+  in.finish();
+  protocol::put(out, std::apply(fn, args));
+}
+
+/// This runner's problem: evaluates `function` (false if it is not one of this problem's).
+/// Defined once per problem (serve_p1a.cpp, ...).
+bool dispatch(protocol::Function function, protocol::Reader& in, protocol::Writer& out);
+
+}  // namespace opspace::runner
