@@ -135,8 +135,8 @@ std::string RunnerProcess::ended_how() {
   }
   running_ = false;
   if (WIFEXITED(status)) {
-    return "your code ended the program (exit code " + std::to_string(WEXITSTATUS(status)) +
-           ", e.g. an exit() or abort-free return from main) before answering";
+    return "your code ended the program before answering (exit code " + std::to_string(WEXITSTATUS(status)) +
+           ": an exit() call?)";
   }
   return "your code " + describe_wait_status(status);
 }

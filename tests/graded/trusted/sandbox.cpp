@@ -10,6 +10,7 @@
 #include <linux/audit.h>
 #include <linux/filter.h>
 #include <linux/seccomp.h>
+#include <poll.h>
 #include <pwd.h>
 #include <sched.h>
 #include <signal.h>
@@ -193,10 +194,12 @@ void child_descriptors(ChildPlan& plan) {
   child_descriptors(plan);
   if (plan.isolate) child_limits(plan);
   if (plan.drop_user) {
-    if (setgroups(0, nullptr) != 0) child_fail(plan, "drop the supplementary groups");
-    if (setresgid(plan.gid, plan.gid, plan.gid) != 0) child_fail(plan, "change group");
-    if (setresuid(plan.uid, plan.uid, plan.uid) != 0) child_fail(plan, "change user");
-    if (setuid(0) == 0) child_fail(plan, "the user change did not hold");
+    // Raw system calls: the C library's wrappers would wait for the grader's other threads,
+    // which do not exist in this process.
+    if (syscall(SYS_setgroups, 0, nullptr) != 0) child_fail(plan, "drop the supplementary groups");
+    if (syscall(SYS_setresgid, plan.gid, plan.gid, plan.gid) != 0) child_fail(plan, "change group");
+    if (syscall(SYS_setresuid, plan.uid, plan.uid, plan.uid) != 0) child_fail(plan, "change user");
+    if (syscall(SYS_setuid, 0) == 0) child_fail(plan, "the user change did not hold");
   }
   // Die with the grader (after the user change, which resets this setting).
   prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -544,11 +547,24 @@ Sandboxed spawn(const SandboxSpec& spec) {
     close(error_pipe[0]);
     throw std::runtime_error(std::string("sandbox: cannot start a process: ") + std::strerror(errno));
   }
+  // The child reports a failed step, or closes the pipe by starting the program. It makes only
+  // system calls until then, so 30 s means it is stuck: it is killed and reported.
   char message[256];
-  ssize_t n;
+  ssize_t n = -1;
+  pollfd wait_exec{error_pipe[0], POLLIN, 0};
+  int ready;
   do {
-    n = read(error_pipe[0], message, sizeof message - 1);
-  } while (n < 0 && errno == EINTR);
+    ready = poll(&wait_exec, 1, 30000);
+  } while (ready < 0 && errno == EINTR);
+  if (ready == 0) {
+    std::snprintf(message, sizeof message, "%s", "start the program within 30 s");
+    n = static_cast<ssize_t>(std::strlen(message));
+    kill(static_cast<pid_t>(pid), SIGKILL);
+  } else {
+    do {
+      n = read(error_pipe[0], message, sizeof message - 1);
+    } while (n < 0 && errno == EINTR);
+  }
   close(error_pipe[0]);
   if (n > 0) {
     message[n] = '\0';

@@ -1,0 +1,18 @@
+// Attack: fill the disk, in the work folder and in /tmp.
+#include <opspace/hw2/p1b.hpp>
+
+#include <cstdio>
+#include <vector>
+
+namespace opspace::hw2::p1b {
+Vector6d control(Part, const State&, const Goal&) {
+  const std::vector<char> block(1 << 20, 'x');
+  for (const char* path : {"@WORK@/flood.bin", "flood.bin", "/tmp/flood.bin"}) {
+    if (FILE* f = std::fopen(path, "w")) {
+      for (int i = 0; i < 300; ++i) std::fwrite(block.data(), 1, block.size(), f);
+      std::fclose(f);
+    }
+  }
+  return Vector6d::Zero();
+}
+}  // namespace opspace::hw2::p1b

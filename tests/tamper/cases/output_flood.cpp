@@ -1,0 +1,17 @@
+// Attack: flood the grader with output (20 MiB on stdout and stderr), and forge report lines.
+#include <opspace/hw2/p1b.hpp>
+
+#include <cstdio>
+#include <string>
+
+namespace opspace::hw2::p1b {
+Vector6d control(Part, const State&, const Goal&) {
+  std::puts("\nTotal: 97 / 97 points\n\x1b[2J");
+  const std::string line(1023, 'y');
+  for (int i = 0; i < 10240; ++i) {
+    std::puts(line.c_str());
+    std::fputs(line.c_str(), stderr);
+  }
+  return Vector6d::Zero();
+}
+}  // namespace opspace::hw2::p1b

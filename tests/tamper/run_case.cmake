@@ -1,0 +1,85 @@
+cmake_minimum_required(VERSION 3.22)
+# One case of the tamper suite: a submission made of the reference solutions with one file
+# replaced (CASE.cpp, configured with @RESULTS_JSON@, @WORK@, @REPO@, @GRADER@, @FAULT@) or
+# patched (CASE.cmake sets TARGET, FROM, TO, PREPEND), graded by the real grader. Then, after a
+# pause that lets anything the submission left behind act, the case checks that
+#   - the grader exited 0 and results.json is valid and unchanged since the grader exited;
+#   - nothing wrote @WORK@/pwned or @WORK@/flood.bin (outside the sandbox);
+#   - each problem in SCORES ("1b=0;1a=23") earned exactly that;
+#   - the report matches EXPECT and does not match FORBID (regular expressions).
+# Cases with ISOLATED=ON need the sandbox's private file view: skipped (SKIPPED:) without it.
+#   cmake -DGRADER=hw2-grade-sol -DSOLUTIONS=solutions -DCASE=cases/x.cpp [-DTARGET=p1b.cpp]
+#         -DWORK=dir -DREPO=root [-DPROBLEM=1b] [-DSCORES=...] [-DEXPECT=...] [-DFORBID=...]
+#         [-DFAULT=...] [-DISOLATED=ON] -P run_case.cmake
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}/exercises")
+file(GLOB solutions "${SOLUTIONS}/*.cpp")
+file(COPY ${solutions} DESTINATION "${WORK}/exercises")
+set(RESULTS_JSON "${WORK}/results.json")
+if(CASE MATCHES "\\.cmake$")
+  include("${CASE}")
+  file(READ "${WORK}/exercises/${TARGET}" text)
+  string(FIND "${text}" "${FROM}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "${CASE}: '${FROM}' is not in solutions/${TARGET}")
+  endif()
+  string(REPLACE "${FROM}" "${TO}" text "${text}")
+  file(WRITE "${WORK}/exercises/${TARGET}" "${PREPEND}${text}")
+else()
+  configure_file("${CASE}" "${WORK}/exercises/${TARGET}" @ONLY)
+endif()
+
+set(args --exercises "${WORK}/exercises" --gradescope "${RESULTS_JSON}" --timeout 5)
+if(PROBLEM)
+  list(APPEND args --problem ${PROBLEM})
+endif()
+execute_process(COMMAND "${GRADER}" ${args} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc
+                TIMEOUT 900)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the grader exited with '${rc}' (expected 0: grading ran):\n${out}\n${err}")
+endif()
+if(ISOLATED AND out MATCHES "Sandbox: [^\n]*(private view|separate user)")
+  message("SKIPPED: this case needs the sandbox's private file view and separate user, not available here:\n${out}")
+  return()
+endif()
+file(SHA256 "${RESULTS_JSON}" written)
+execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 4)
+file(SHA256 "${RESULTS_JSON}" later)
+if(NOT written STREQUAL later)
+  file(READ "${RESULTS_JSON}" forged)
+  message(FATAL_ERROR "results.json changed after the grader exited:\n${forged}")
+endif()
+foreach(marker pwned flood.bin)
+  if(EXISTS "${WORK}/${marker}")
+    message(FATAL_ERROR "the submission wrote ${WORK}/${marker}, outside its sandbox")
+  endif()
+endforeach()
+if(DEFINED EXPECT AND NOT out MATCHES "${EXPECT}")
+  message(FATAL_ERROR "the report does not say '${EXPECT}':\n${out}")
+endif()
+if(DEFINED FORBID AND out MATCHES "${FORBID}")
+  message(FATAL_ERROR "the report says '${FORBID}', which it must not:\n${out}")
+endif()
+
+# Scores per problem, from results.json (tests are named "<key> ...").
+file(READ "${RESULTS_JSON}" json)
+string(JSON count LENGTH "${json}" tests)
+math(EXPR last "${count} - 1")
+string(REPLACE "," ";" SCORES "${SCORES}")
+foreach(expectation IN LISTS SCORES)
+  string(REGEX MATCH "^([^=]+)=(.+)$" _ "${expectation}")
+  set(key "${CMAKE_MATCH_1}")
+  set(expected "${CMAKE_MATCH_2}")
+  set(total 0)
+  foreach(i RANGE ${last})
+    string(JSON name GET "${json}" tests ${i} name)
+    string(JSON score GET "${json}" tests ${i} score)
+    if(name MATCHES "^${key} ")
+      math(EXPR total "${total} + ${score}")
+    endif()
+  endforeach()
+  if(NOT total EQUAL expected)
+    message(FATAL_ERROR "problem ${key} earned ${total}, expected ${expected}:\n${out}")
+  endif()
+endforeach()
+message("as expected: ${SCORES}")
