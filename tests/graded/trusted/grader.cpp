@@ -229,8 +229,11 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   options.timeout = kDefaultTimeout;
   int exit_code = 0;
   if (!parse(argc, argv, options, exit_code)) return exit_code;
+  if (!options.isolate && geteuid() == 0) {
+    std::cerr << argv[0] << ": --no-isolation would run a student's code as root: refused\n";
+    return 2;
+  }
   if (options.user.empty()) options.user = default_sandbox_user();
-  if (!options.isolate) options.user.clear();
   if (options.seed == 0) {
     std::random_device device;
     options.seed = (static_cast<std::uint64_t>(device()) << 20 ^ device()) % 1000000000ull + 1;

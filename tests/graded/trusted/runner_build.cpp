@@ -197,19 +197,17 @@ bool under(const fs::path& path, const std::string& root) {
 
 // Every file the compilation read must be the student's own file or a public header.
 std::string check_includes(const std::string& depfile, const std::string& work_dir, const std::string& shown_as,
-                           const Toolchain& toolchain) {
+                           const std::vector<std::string>& roots) {
   for (const std::string& dep : dependencies(depfile)) {
     std::error_code ec;
     const fs::path path = fs::weakly_canonical(fs::path(dep).is_absolute() ? fs::path(dep) : fs::path(work_dir) / dep, ec);
-    if (under(path, work_dir)) {
-      if (path.filename() == fs::path(shown_as).filename()) continue;
-    } else {
-      bool allowed = false;
-      for (const std::string& root : toolchain.include_roots) allowed = allowed || under(path, root);
-      if (allowed) continue;
+    if (path == fs::weakly_canonical(fs::path(work_dir) / fs::path(shown_as).filename(), ec)) continue;
+    bool allowed = false;
+    for (const std::string& root : roots) allowed = allowed || under(path, root);
+    if (!allowed) {
+      return shown_as + " includes " + sanitize(dep, 200, dep.size()) +
+             ": an exercise may include only the library's headers (<opspace/...>), Eigen and the standard library";
     }
-    return shown_as + " includes " + sanitize(dep, 200, dep.size()) +
-           ": an exercise may include only the library's headers (<opspace/...>), Eigen and the standard library";
   }
   return "";
 }
@@ -219,6 +217,39 @@ void make_owned(const std::string& path, const std::string& user) {
   const passwd* pw = getpwnam(user.c_str());
   if (!pw || chown(path.c_str(), pw->pw_uid, pw->pw_gid) != 0)
     throw std::runtime_error("cannot give the build folder to user " + user);
+}
+
+// The library's headers and archives, copied into the build folder (2 MB): the compiler then
+// needs to see nothing of the repository, whatever the sandbox could hide or not (a chroot
+// without namespaces, a repository under a folder the sandbox user cannot enter).
+struct Staged {
+  std::vector<std::pair<std::string, std::string>> map;  // original path -> its copy
+  std::string rewrite(std::string arg) const {
+    for (const auto& [from, to] : map) {
+      const std::size_t at = arg.find(from);
+      if (at != std::string::npos) return arg.replace(at, from.size(), to);
+    }
+    return arg;
+  }
+};
+
+Staged stage(const Toolchain& toolchain, const std::string& work) {
+  Staged staged;
+  std::vector<std::string> paths = toolchain.visible;
+  std::sort(paths.begin(), paths.end(), [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const fs::path from(paths[i]);
+    const fs::path dir = fs::path(work) / "kit" / std::to_string(i);
+    fs::create_directories(dir);
+    if (fs::is_directory(from)) {
+      fs::copy(from, dir, fs::copy_options::recursive);
+      staged.map.emplace_back(paths[i], dir.string());
+    } else {
+      fs::copy_file(from, dir / from.filename());
+      staged.map.emplace_back(paths[i], (dir / from.filename()).string());
+    }
+  }
+  return staged;
 }
 
 const std::vector<std::string>* inputs_of(const Toolchain& toolchain, const std::string& key) {
@@ -376,29 +407,33 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   const std::string file = fs::path(shown_as).filename().string();
   const std::string work_file = work + "/" + file;
   std::ofstream(work_file, std::ios::binary) << text;
+  const Staged staged = stage(toolchain, work);
   make_owned(work, settings.user);
   make_owned(work_file, settings.user);
+  std::vector<std::string> roots;
+  for (const std::string& root : toolchain.include_roots) roots.push_back(staged.rewrite(root));
 
   // Compile.
-  std::vector<std::string> compile = toolchain.compile;
+  std::vector<std::string> compile;
+  for (const std::string& arg : toolchain.compile) compile.push_back(staged.rewrite(arg));
   compile.insert(compile.end(), {"-c", work_file, "-o", work + "/exercise.o", "-MD", "-MF", work + "/exercise.d"});
-  const CommandResult cc = run_tool(compile, work, toolchain.visible, settings);
+  const CommandResult cc = run_tool(compile, work, {}, settings);
   built.warnings = warnings_of(cc.output, work_file, shown_as);
   if (cc.timed_out) {
     built.error = "compiling " + shown_as + " took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s";
     return built;
   }
   if (!WIFEXITED(cc.status) || WEXITSTATUS(cc.status) != 0) {
-    built.error = first_error(cc.output, work_file, shown_as, toolchain.include_roots);
+    built.error = first_error(cc.output, work_file, shown_as, roots);
     if (built.error.empty()) built.error = "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")";
     return built;
   }
-  built.error = check_includes(work + "/exercise.d", work, shown_as, toolchain);
+  built.error = check_includes(work + "/exercise.d", work, shown_as, roots);
   if (!built.error.empty()) return built;
 
   // Which library functions it calls: the object's undefined symbols.
-  const CommandResult nm = run_tool({toolchain.nm, "-C", "--undefined-only", "-P", work + "/exercise.o"}, work,
-                                    toolchain.visible, settings);
+  const CommandResult nm = run_tool({toolchain.nm, "-C", "--undefined-only", "-P", work + "/exercise.o"}, work, {},
+                                    settings);
   if (nm.timed_out || !WIFEXITED(nm.status) || WEXITSTATUS(nm.status) != 0) {
     built.error = "the grader could not list the functions " + shown_as + " calls";
     return built;
@@ -413,11 +448,11 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   // Link with the problem's runner loop and the library.
   std::vector<std::string> link = toolchain.link;
   link.push_back(work + "/exercise.o");
-  link.insert(link.end(), inputs->begin(), inputs->end());
+  for (const std::string& input : *inputs) link.push_back(staged.rewrite(input));
   link.insert(link.end(), {"-o", work + "/runner"});
-  const CommandResult ld = run_tool(link, work, toolchain.visible, settings);
+  const CommandResult ld = run_tool(link, work, {}, settings);
   if (ld.timed_out || !WIFEXITED(ld.status) || WEXITSTATUS(ld.status) != 0) {
-    built.error = first_error(ld.output, work + "/exercise.o", shown_as, toolchain.include_roots);
+    built.error = first_error(ld.output, work + "/exercise.o", shown_as, roots);
     if (built.error.empty()) built.error = "linking the runner of " + shown_as + " failed";
     built.error = "linking failed: " + built.error;
     return built;

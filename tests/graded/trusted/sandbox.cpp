@@ -430,6 +430,58 @@ void reap_orphans() {
   }
 }
 
+// One try at starting the program with namespace `flags`: its pid, or -1 with `why`.
+pid_t attempt(ChildPlan& plan, const SandboxSpec& spec, unsigned long flags, std::string& why) {
+  int error_pipe[2];
+  if (pipe2(error_pipe, O_CLOEXEC) != 0) {
+    why = "create a pipe";
+    return -1;
+  }
+  plan.error_fd = error_pipe[1];
+  plan.user_namespace = (flags & CLONE_NEWUSER) != 0;
+  plan.mount_namespace = plan.pid_namespace = (flags & CLONE_NEWNS) != 0;
+  plan.mounts.clear();
+  if (plan.mount_namespace) plan_root(plan, spec);
+  std::fflush(nullptr);
+  std::unique_lock<std::mutex> hold(programs_lock());
+  const long pid = syscall(SYS_clone, flags | SIGCHLD, nullptr, nullptr, nullptr, nullptr);
+  if (pid == 0) child_main(plan);
+  const int clone_error = errno;
+  if (pid > 0) live_programs().insert(static_cast<pid_t>(pid));
+  hold.unlock();
+  close(error_pipe[1]);
+  if (pid < 0) {
+    close(error_pipe[0]);
+    why = std::string("start a process: ") + std::strerror(clone_error);
+    return -1;
+  }
+  // The child reports a failed step, or closes the pipe by starting the program. It makes only
+  // system calls until then, so 30 s means it is stuck: it is killed and reported.
+  char message[256];
+  ssize_t n = -1;
+  pollfd wait_exec{error_pipe[0], POLLIN, 0};
+  int ready;
+  do {
+    ready = poll(&wait_exec, 1, 30000);
+  } while (ready < 0 && errno == EINTR);
+  if (ready == 0) {
+    std::snprintf(message, sizeof message, "%s", "start the program within 30 s");
+    n = static_cast<ssize_t>(std::strlen(message));
+    kill(static_cast<pid_t>(pid), SIGKILL);
+  } else {
+    do {
+      n = read(error_pipe[0], message, sizeof message - 1);
+    } while (n < 0 && errno == EINTR);
+  }
+  close(error_pipe[0]);
+  if (n <= 0) return static_cast<pid_t>(pid);
+  message[n] = '\0';
+  waitpid(static_cast<pid_t>(pid), nullptr, 0);
+  forget(static_cast<pid_t>(pid));
+  why = message;
+  return -1;
+}
+
 }  // namespace
 
 std::string Protections::missing() const {
@@ -512,12 +564,9 @@ Sandboxed spawn(const SandboxSpec& spec) {
     }
   }
 
-  int error_pipe[2];
-  if (pipe2(error_pipe, O_CLOEXEC) != 0) throw std::runtime_error("sandbox: no pipe");
-  plan.error_fd = error_pipe[1];
-
   // Namespaces, from the most to the least: as root directly, else through a user namespace,
-  // else none (a laptop without user namespaces, a container that forbids them).
+  // else none (a laptop without user namespaces, a container that forbids them, a chroot
+  // whose root is not a mount point). A setup that fails is tried again with the next.
   const unsigned long namespaces = CLONE_NEWPID | CLONE_NEWNET | CLONE_NEWNS | CLONE_NEWIPC | CLONE_NEWUTS;
   std::vector<unsigned long> attempts;
   if (spec.isolate) {
@@ -525,55 +574,19 @@ Sandboxed spawn(const SandboxSpec& spec) {
     attempts.push_back(namespaces | CLONE_NEWUSER);
   }
   attempts.push_back(0);
-  std::fflush(nullptr);
-  std::unique_lock<std::mutex> hold(programs_lock());
-  long pid = -1;
+  std::string failure = "no way to start a process";
   for (unsigned long flags : attempts) {
-    plan.user_namespace = (flags & CLONE_NEWUSER) != 0;
-    plan.mount_namespace = plan.pid_namespace = (flags & CLONE_NEWNS) != 0;
-    plan.mounts.clear();
-    if (plan.mount_namespace) plan_root(plan, spec);
-    pid = syscall(SYS_clone, flags | SIGCHLD, nullptr, nullptr, nullptr, nullptr);
-    if (pid == 0) child_main(plan);
+    std::string why;
+    const pid_t pid = attempt(plan, spec, flags, why);
     if (pid > 0) {
       on.pid_namespace = on.no_network = on.private_files = flags != 0;
-      break;
+      return Sandboxed{pid, on};
     }
+    failure = why;
   }
-  if (pid > 0) live_programs().insert(static_cast<pid_t>(pid));
-  hold.unlock();
-  close(error_pipe[1]);
-  if (pid < 0) {
-    close(error_pipe[0]);
-    throw std::runtime_error(std::string("sandbox: cannot start a process: ") + std::strerror(errno));
-  }
-  // The child reports a failed step, or closes the pipe by starting the program. It makes only
-  // system calls until then, so 30 s means it is stuck: it is killed and reported.
-  char message[256];
-  ssize_t n = -1;
-  pollfd wait_exec{error_pipe[0], POLLIN, 0};
-  int ready;
-  do {
-    ready = poll(&wait_exec, 1, 30000);
-  } while (ready < 0 && errno == EINTR);
-  if (ready == 0) {
-    std::snprintf(message, sizeof message, "%s", "start the program within 30 s");
-    n = static_cast<ssize_t>(std::strlen(message));
-    kill(static_cast<pid_t>(pid), SIGKILL);
-  } else {
-    do {
-      n = read(error_pipe[0], message, sizeof message - 1);
-    } while (n < 0 && errno == EINTR);
-  }
-  close(error_pipe[0]);
-  if (n > 0) {
-    message[n] = '\0';
-    waitpid(static_cast<pid_t>(pid), nullptr, 0);
-    forget(static_cast<pid_t>(pid));
-    throw std::runtime_error("sandbox: cannot " + std::string(message) + " (" + spec.argv[0] + ")");
-  }
-  return Sandboxed{static_cast<pid_t>(pid), on};
+  throw std::runtime_error("sandbox: cannot " + failure + " (" + spec.argv[0] + ")");
 }
+
 
 bool wait_until(const Sandboxed& program, std::chrono::steady_clock::time_point deadline, int& status) {
   auto pause = std::chrono::microseconds(100);
