@@ -1,14 +1,15 @@
-// The graded suite must discriminate: full marks for the reference solutions, and each
-// known-wrong implementation loses exactly the tests aimed at it, no fewer and no more.
-// (That the untouched stubs score 0 is checked on the real hw2-grade program: see
-// tests/graded/check_stubs.cmake.)
+// The graded suite must discriminate: full marks for the reference solutions, each known
+// mistake (tests/graded/trusted/mistakes_*.cpp) loses exactly the tests aimed at it, no fewer
+// and no more, and the grader names it when it is made alone. (That the untouched stubs
+// score 0 is checked on the real hw2-grade program: see tests/graded/check_stubs.cmake.)
 #include <doctest/doctest.h>
 
 #include <set>
 #include <string>
 
 #include "linked_api.hpp"
-#include "mutants.hpp"
+#include "mistakes.hpp"
+#include "oracles.hpp"
 #include "report.hpp"
 #include "suite.hpp"
 
@@ -32,6 +33,19 @@ std::string join(const std::set<std::string>& names) {
   return out.empty() ? " (none)" : out;
 }
 
+// Every "likely mistake" line the grader prints for `api`, problem by problem.
+std::set<std::string> named_mistakes(const grading::Hw2Api& api) {
+  std::set<std::string> named;
+  for (const grading::Problem& problem : grading::graded_suite()) {
+    const std::vector<grading::Mistake> catalogue = grading::mistakes(problem.key);
+    for (const grading::TestResult& r : grading::run_tests(problem.tests, api, nullptr, 0.0, &catalogue)) {
+      for (const std::string& f : r.findings)
+        if (f.rfind("likely mistake: ", 0) == 0) named.insert(f);
+    }
+  }
+  return named;
+}
+
 }  // namespace
 
 TEST_CASE("the reference solutions earn full marks on every graded test") {
@@ -46,18 +60,44 @@ TEST_CASE("the reference solutions earn full marks on every graded test") {
   }
 }
 
-TEST_CASE("each known-wrong implementation loses exactly the tests aimed at it") {
+TEST_CASE("the grader's own reference (its oracles) earns full marks on every graded test") {
+  grading::Hw2Api api = grading::oracle::reference_api();
+  const std::set<std::string> failed = failed_tests(api);
+  INFO("tests that failed:" << join(failed));
+  CHECK(failed.empty());
+}
+
+TEST_CASE("each known mistake loses exactly the tests aimed at it") {
   std::uint64_t identity = 100;
-  for (const opspace::mutants::Mutant& mutant : opspace::mutants::all_mutants()) {
+  for (const grading::Mistake& mistake : grading::all_mistakes()) {
     grading::Hw2Api api = grading::linked_api();
-    mutant.apply(api);
+    mistake.apply(api);
     api.identity = ++identity;  // its own simulated runs
-    const std::set<std::string> expected(mutant.caught_by.begin(), mutant.caught_by.end());
+    const std::set<std::string> expected(mistake.caught_by.begin(), mistake.caught_by.end());
     const std::set<std::string> failed = failed_tests(api);
-    INFO("mistake: " << mutant.mistake << "\n  tests that should fail:" << join(expected)
+    INFO("mistake: " << mistake.what << "\n  tests that should fail:" << join(expected)
                      << "\n  tests that failed:" << join(failed));
     CHECK(failed == expected);
   }
+}
+
+TEST_CASE("each known mistake made alone is named in the report, and only it") {
+  std::uint64_t identity = 500;
+  for (const grading::Mistake& mistake : grading::all_mistakes()) {
+    grading::Hw2Api api = grading::linked_api();
+    mistake.apply(api);
+    api.identity = ++identity;
+    const std::set<std::string> named = named_mistakes(api);
+    const std::string expected = "likely mistake: " + mistake.what + ". The problem set asks: " + mistake.instead;
+    INFO("mistake: " << mistake.what << "\n  named:" << join(named));
+    CHECK(named == std::set<std::string>{expected});
+  }
+}
+
+TEST_CASE("the reference solutions get no 'likely mistake' line") {
+  const std::set<std::string> named = named_mistakes(grading::linked_api());
+  INFO("named:" << join(named));
+  CHECK(named.empty());
 }
 
 TEST_CASE("every graded test names what it checks and carries points and a hint") {
@@ -67,7 +107,19 @@ TEST_CASE("every graded test names what it checks and carries points and a hint"
       INFO("problem " << problem.key << ": " << test.name);
       CHECK(test.points > 0);
       CHECK(!test.hint.empty());
-      CHECK(names.insert(test.name).second);  // unique, so that a mutant's target is unambiguous
+      CHECK(names.insert(test.name).second);  // unique, so that a mistake's target is unambiguous
     }
+  }
+}
+
+TEST_CASE("every known mistake aims at tests that exist and says what the problem set asks") {
+  std::set<std::string> tests;
+  for (const grading::Problem& problem : grading::graded_suite())
+    for (const grading::GradedTest& test : problem.tests) tests.insert(test.name);
+  for (const grading::Mistake& mistake : grading::all_mistakes()) {
+    INFO("mistake: " << mistake.what);
+    CHECK(!mistake.instead.empty());
+    CHECK(!mistake.caught_by.empty());
+    for (const std::string& name : mistake.caught_by) CHECK(tests.count(name) == 1);
   }
 }

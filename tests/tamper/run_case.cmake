@@ -9,10 +9,13 @@ cmake_minimum_required(VERSION 3.22)
 #   - the report matches EXPECT and does not match FORBID (regular expressions).
 # Cases with ISOLATED=ON need the sandbox's private file view: skipped (SKIPPED:) without it.
 #   cmake -DGRADER=hw2-grade-sol -DSOLUTIONS=solutions -DCASE=cases/x.cpp [-DTARGET=p1b.cpp]
-#         -DWORK=dir -DREPO=root [-DPROBLEM=1b] [-DSCORES=...] [-DEXPECT=...] [-DFORBID=...]
+#         -DWORK=dir -DREPO=root [-DTIMEOUT=seconds per test, 5] [-DPROBLEM=1b] [-DSCORES=...] [-DEXPECT=...] [-DFORBID=...]
 #         [-DFAULT=...] [-DISOLATED=ON] [-DGRADER_ARGS=--no-isolation] -P run_case.cmake
 # (GRADER_ARGS=--no-isolation turns the sandbox off: then the attacks succeed, which shows
 # that the cases can fail.)
+if(NOT TIMEOUT)
+  set(TIMEOUT 5)
+endif()
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/exercises")
 file(GLOB solutions "${SOLUTIONS}/*.cpp")
@@ -31,7 +34,7 @@ else()
   configure_file("${CASE}" "${WORK}/exercises/${TARGET}" @ONLY)
 endif()
 
-set(args --exercises "${WORK}/exercises" --gradescope "${RESULTS_JSON}" --timeout 5 ${GRADER_ARGS})
+set(args --exercises "${WORK}/exercises" --gradescope "${RESULTS_JSON}" --timeout ${TIMEOUT} ${GRADER_ARGS})
 if(PROBLEM)
   list(APPEND args --problem ${PROBLEM})
 endif()

@@ -175,6 +175,29 @@ void get(Reader& r, S& s) {
   fields(s, [&r](auto& x) { get(r, x); }, static_cast<S*>(nullptr));
 }
 
+/// Every number of a value, in encoding order, as doubles: to compare two values entry by
+/// entry (the grader's diagnosis compares a student's answers with a known mistake's).
+inline void flatten(std::vector<double>& out, double v) { out.push_back(v); }
+inline void flatten(std::vector<double>& out, int v) { out.push_back(v); }
+inline void flatten(std::vector<double>& out, bool v) { out.push_back(v ? 1.0 : 0.0); }
+template <class E, std::enable_if_t<std::is_enum_v<E>, int> = 0>
+void flatten(std::vector<double>& out, E v) {
+  out.push_back(static_cast<double>(static_cast<int>(v)));
+}
+template <int R, int C, int O>
+void flatten(std::vector<double>& out, const Eigen::Matrix<double, R, C, O, R, C>& m) {
+  for (int j = 0; j < C; ++j)
+    for (int i = 0; i < R; ++i) out.push_back(m(i, j));
+}
+template <class T, std::size_t N>
+void flatten(std::vector<double>& out, const std::array<T, N>& a) {
+  for (const T& x : a) flatten(out, x);
+}
+template <class S, class = decltype(fields(std::declval<S&>(), AnyField{}, static_cast<S*>(nullptr)))>
+void flatten(std::vector<double>& out, const S& s) {
+  fields(s, [&out](const auto& x) { flatten(out, x); }, static_cast<S*>(nullptr));
+}
+
 /// The encoded size of a value of type T (every type above has one fixed size), from the
 /// types alone: no value is read.
 template <class T>

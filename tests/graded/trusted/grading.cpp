@@ -6,6 +6,7 @@
 #include <exception>
 #include <sstream>
 
+#include "diagnosis.hpp"
 #include "runner_process.hpp"
 
 namespace opspace::grading {
@@ -146,7 +147,7 @@ unsigned seed_for(unsigned salt) {
 }
 
 std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw2Api& api, RunnerProcess* runner,
-                                  double timeout) {
+                                  double timeout, const std::vector<Mistake>* catalogue) {
   std::vector<TestResult> results;
   results.reserve(tests.size());
   for (const GradedTest& test : tests) {
@@ -154,7 +155,8 @@ std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw
       const auto budget = std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(timeout));
       runner->begin_test(std::chrono::steady_clock::now() + budget, timeout);
     }
-    TestResult result = run_test(test, api);
+    Recording recording;
+    TestResult result = catalogue ? run_test(test, recorded(api, recording)) : run_test(test, api);
     if (runner) {
       // A failure of the runner is what happened, whatever the checks concluded from it.
       if (!runner->failure().empty()) {
@@ -164,6 +166,10 @@ std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw
       }
       const Printed printed = runner->end_test();
       if (printed.total > 0) result.printed = sanitize(printed.text, RunnerProcess::kMaxPrinted, printed.total);
+    }
+    if (catalogue && result.score < test.points && !result.interrupted) {
+      const std::string likely = diagnose(*catalogue, test.name, recording);
+      if (!likely.empty()) result.findings.push_back(likely);
     }
     results.push_back(std::move(result));
   }

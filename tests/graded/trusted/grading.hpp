@@ -67,12 +67,15 @@ struct TestResult {
 };
 
 class RunnerProcess;
+struct Mistake;
 
 /// Runs `tests` against `api`; a test whose body throws earns 0 and reports the exception.
 /// With a `runner` (the grader), each test gets `timeout` seconds for all its requests, and a
-/// runner that fails is started again for the next test.
+/// runner that fails is started again for the next test. With a `catalogue` (mistakes.hpp), a
+/// failed test whose answers one known mistake reproduces names it ("likely mistake: ...").
 std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw2Api& api,
-                                  RunnerProcess* runner = nullptr, double timeout = 0.0);
+                                  RunnerProcess* runner = nullptr, double timeout = 0.0,
+                                  const std::vector<Mistake>* catalogue = nullptr);
 
 /// The random inputs of a grading run derive from one seed (hw2-grade prints it; --seed
 /// replays it). 0, the default, gives the fixed inputs the suite's own tests use.

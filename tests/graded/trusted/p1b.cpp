@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 
+#include "oracles.hpp"
 #include "suite.hpp"
 #include "support/random.hpp"
 
@@ -191,5 +192,11 @@ Problem problem_1b() {
                part2_drifts_more_than_part3},
           }};
 }
+
+namespace oracle {
+hw2::p1b::Vector6d law_1b(Part part, const hw2::p1b::State& s, const hw2::p1b::Goal& goal) {
+  return expected_torque(part, s, goal);
+}
+}  // namespace oracle
 
 }  // namespace opspace::grading

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <map>
 
+#include "oracles.hpp"
 #include "suite.hpp"
 #include "support/problem2.hpp"
 #include "support/random.hpp"
@@ -257,5 +258,9 @@ Problem problem_2() {
                self_motion_is_damped},
           }};
 }
+
+namespace oracle {
+Vector7d law_2(const hw2::p2::State& s, const hw2::p2::Goal& goal) { return expected_torque(s, goal); }
+}  // namespace oracle
 
 }  // namespace opspace::grading

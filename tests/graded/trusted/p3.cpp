@@ -11,6 +11,7 @@
 #include <cmath>
 #include <map>
 
+#include "oracles.hpp"
 #include "suite.hpp"
 #include "support/random.hpp"
 
@@ -202,5 +203,11 @@ Problem problem_3() {
                contact_kept},
           }};
 }
+
+namespace oracle {
+Matrix6d omega() { return grading::omega(); }
+Matrix6d omega_bar() { return grading::omega_bar(); }
+Vector7d law_3(const hw2::p3::State& s, const hw2::p3::Goal& goal) { return expected_torque(s, goal); }
+}  // namespace oracle
 
 }  // namespace opspace::grading

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <map>
 
+#include "oracles.hpp"
 #include "suite.hpp"
 #include "support/random.hpp"
 
@@ -371,5 +372,11 @@ Problem problem_4() {
                [](const Hw2Api& api, Check& check) { reaches(Target::kAlongY0, api, check); }},
           }};
 }
+
+namespace oracle {
+Eigen::Vector3d law_4(Target target, const hw2::p4::State& s, const hw2::p4::Goal& goal) {
+  return expected_torque(target, s, goal);
+}
+}  // namespace oracle
 
 }  // namespace opspace::grading

@@ -1,10 +1,11 @@
-// Known-wrong implementations of problem 3. Each changes the reference in one place.
+// Known mistakes of problem 3. The law is written out with one mistake made.
 #include <opspace/euler_params.hpp>
 #include <opspace/hw2/p3.hpp>
 
-#include "mutants.hpp"
+#include "mistakes.hpp"
+#include "oracles.hpp"
 
-namespace opspace::mutants {
+namespace opspace::grading {
 
 namespace {
 
@@ -27,8 +28,8 @@ Vector7d law(const State& s, const Goal& goal, const Mistakes& m) {
   error << s.x_p - goal.x_d.head<3>(), orientation_error(s.lambda, goal.x_d.tail<4>());
   twist << s.v, s.w;
   const Vector6d motion = -goal.kpx * error - goal.kvx * (twist - E_pinv * goal.xdot_d) + E_pinv * goal.xddot_d;
-  const Matrix6d omega = m.swapped ? hw2::p3::force_selection() : hw2::p3::motion_selection();
-  const Matrix6d omega_bar = m.swapped ? hw2::p3::motion_selection() : hw2::p3::force_selection();
+  const Matrix6d omega = m.swapped ? oracle::omega_bar() : oracle::omega();
+  const Matrix6d omega_bar = m.swapped ? oracle::omega() : oracle::omega_bar();
   Vector6d force = m.no_omega_bar ? goal.F_d : Vector6d(omega_bar * goal.F_d);
   if (m.force_times_lambda) force = s.Lambda0 * force;
   const Vector6d F = s.Lambda0 * omega * motion + s.p + force;
@@ -45,7 +46,7 @@ Vector7d with(const State& s, const Goal& goal) {
 
 }  // namespace
 
-std::vector<Mutant> p3_mutants() {
+std::vector<Mistake> mistakes_3() {
   const std::string selection = "a. Omega selects F_y, F_z, M_x (motion) and Omega-bar selects F_x, M_y, M_z (force)";
   const std::string law =
       "b. the controller applies J0^T (Lambda0 Omega (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ "
@@ -61,9 +62,10 @@ std::vector<Mutant> p3_mutants() {
       // RMS. The tool stays flat all the same (0.12 deg): the rotations about y and z are now
       // motion-controlled to lambda_d, which keeps link7's z axis along +x.
       {"Omega and Omega-bar swapped (motion control along x and about y, z; force in the rest)",
-       [](grading::Hw2Api& api) {
-         api.p3.motion_selection = &hw2::p3::force_selection;
-         api.p3.force_selection = &hw2::p3::motion_selection;
+       "Omega keeps the motion directions F_y, F_z, M_x; Omega-bar the force directions F_x, M_y, M_z",
+       [](Hw2Api& api) {
+         api.p3.motion_selection = &oracle::omega_bar;
+         api.p3.force_selection = &oracle::omega;
          api.p3.control = &with<&Mistakes::swapped>;
        },
        {selection, law, force, yz, rx, kept}},
@@ -71,15 +73,17 @@ std::vector<Mutant> p3_mutants() {
       // without Omega-bar the torque is the same in simulation: only the law test, whose F_d
       // has components in the motion directions too, sees it.
       {"the desired force F_d added without Omega-bar",
-       [](grading::Hw2Api& api) { api.p3.control = &with<&Mistakes::no_omega_bar>; },
+       "the force goes through Omega-bar: + Omega-bar F_d, so that it acts only in the force directions",
+       [](Hw2Api& api) { api.p3.control = &with<&Mistakes::no_omega_bar>; },
        {law}},
       // Lambda0 F_d = 10 Lambda0(:, 0): at the start Lambda0(0, 0) = 3.4 kg, so the tool pushes
       // 33 N on average instead of 10 N; Lambda0(1, 0) = 1.1 kg adds an 11 N push along y that
       // the motion loop must fight, 33 mm RMS of y, z error.
       {"the desired force multiplied by Lambda0 (treated as an acceleration)",
-       [](grading::Hw2Api& api) { api.p3.control = &with<&Mistakes::force_times_lambda>; },
+       "F_d is a force: Omega-bar F_d is added after Lambda0, not multiplied by it",
+       [](Hw2Api& api) { api.p3.control = &with<&Mistakes::force_times_lambda>; },
        {law, force, yz}},
   };
 }
 
-}  // namespace opspace::mutants
+}  // namespace opspace::grading

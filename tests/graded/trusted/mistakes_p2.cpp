@@ -1,12 +1,13 @@
-// Known-wrong implementations of problem 2. Each changes the reference in one place.
+// Known mistakes of problem 2. The law is written out with one mistake made; 2(a)'s mistake
+// wraps the function it is given (the reference solutions, or the grader's oracle).
 #include <opspace/euler_params.hpp>
 #include <opspace/hw2/p2.hpp>
 
 #include <cmath>
 
-#include "mutants.hpp"
+#include "mistakes.hpp"
 
-namespace opspace::mutants {
+namespace opspace::grading {
 
 namespace {
 
@@ -22,6 +23,7 @@ struct Mistakes {
   bool delta_phi_flipped = false;        // delta_phi = E^+ (lambda_d - lambda)
   bool no_nullspace_damping = false;     // N0^T (A (-kvj dq) + g) without A (-kvj dq)
   bool damping_not_projected = false;    // A (-kvj dq) added without N0^T
+  bool no_p = false;                     // F without p
 };
 
 Vector7d law(const State& s, const Goal& goal, const Mistakes& m) {
@@ -32,7 +34,8 @@ Vector7d law(const State& s, const Goal& goal, const Mistakes& m) {
   if (m.delta_phi_flipped) error.tail<3>() = -error.tail<3>();
   twist << s.v, s.w;
   const Vector6d feed_forward = m.no_feed_forward ? Vector6d::Zero() : Vector6d(E_pinv * goal.xddot_d);
-  const Vector6d F = s.Lambda0 * (-goal.kpx * error - goal.kvx * (twist - E_pinv * goal.xdot_d) + feed_forward) + s.p;
+  const Vector6d F = s.Lambda0 * (-goal.kpx * error - goal.kvx * (twist - E_pinv * goal.xdot_d) + feed_forward) +
+                     (m.no_p ? Vector6d::Zero() : s.p);
   const Vector7d damping = s.A * (-goal.kvj * s.dq);
   Vector7d tau = s.J0.transpose() * F + s.N0.transpose() * s.g;
   if (m.damping_not_projected) {
@@ -52,12 +55,12 @@ Vector7d with(const State& s, const Goal& goal) {
 }
 
 // 2(a) with the chain rule half done: d^2/dt^2 sin(a) taken as cos(a) a'', the -sin(a) a'^2
-// term forgotten (and likewise for cos(a)).
-Vector7d acceleration_without_a_dot_squared(double t) {
+// term forgotten (and likewise for cos(a)), subtracted from the given 2(a).
+Vector7d without_a_dot_squared(const Fn<decltype(hw2::p2::desired_acceleration)>& right, double t) {
   constexpr double kPi = 3.14159265358979323846;
   const double w = 2 * kPi / 5, s = 1 / std::sqrt(2.0);
   const double a = kPi / 4 * std::cos(w * t), a_dot = -kPi / 4 * w * std::sin(w * t);
-  Vector7d wrong = hw2::p2::desired_acceleration(t);
+  Vector7d wrong = right(t);
   const double sin_term = -std::sin(a) * a_dot * a_dot, cos_term = -std::cos(a) * a_dot * a_dot;
   wrong.tail<4>() -= s * Eigen::Vector4d(sin_term, cos_term, sin_term, cos_term);
   return wrong;
@@ -65,7 +68,7 @@ Vector7d acceleration_without_a_dot_squared(double t) {
 
 }  // namespace
 
-std::vector<Mutant> p2_mutants() {
+std::vector<Mistake> mistakes_2() {
   const std::string a = "a. xddot_d is the second time derivative of x_d(t), as in the closed forms of 2(a)";
   const std::string law =
       "c. the controller applies J0^T (Lambda0 (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ xdot_d) "
@@ -80,37 +83,53 @@ std::vector<Mutant> p2_mutants() {
       "d. in simulation the arm repeats its motion every period: the null-space self-motion is damped";
   return {
       // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation
-      // (closed forms in tests/graded/p2.cpp); the arm still moves as it should otherwise.
+      // (closed forms in tests/graded/trusted/p2.cpp); the arm still moves as it should otherwise.
       {"no feed-forward acceleration [vdot_d; wdot_d]",
-       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::no_feed_forward>; },
+       "the command is -kpx e - kvx (edot) + [vdot_d; wdot_d], with [vdot_d; wdot_d] = E^+ xddot_d from 2(b)",
+       [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_feed_forward>; },
        {law, position, orientation}},
       // For unit Euler parameters delta_phi is the same at lambda_d (test_euler_params.cpp), and
       // E^+(lambda_d) xdot_d differs from E^+(lambda) xdot_d only to second order in the
       // tracking error: in simulation the mistake is invisible, only the law test sees it.
       {"E^+ evaluated at lambda_d instead of the current lambda",
-       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::E_pinv_at_lambda_d>; },
+       "every E^+ in the law is evaluated at the current s.lambda",
+       [](Hw2Api& api) { api.p2.control = &with<&Mistakes::E_pinv_at_lambda_d>; },
        {law}},
       // Positive orientation feedback: link7 turns away from lambda_d until the error reaches
       // 180 degrees (lambda flips), the arm swings far off its path and past joint limits.
       {"delta_phi with the wrong sign, E^+ (lambda_d - lambda)",
-       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::delta_phi_flipped>; },
+       "delta_phi = E_r^+ (lambda - lambda_d), so that -kpx delta_phi turns link7 back to lambda_d",
+       [](Hw2Api& api) { api.p2.control = &with<&Mistakes::delta_phi_flipped>; },
        {law, position, orientation, continuous, limits, drift}},
       // The task is still tracked, but the elbow's self-motion is undamped: the arm's posture
       // wanders by tens of degrees per period.
       {"no null-space damping N0^T A (-kvj dq)",
-       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::no_nullspace_damping>; },
+       "the null-space term is N0^T (A (-kvj dq) + g): it damps the self-motion",
+       [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_nullspace_damping>; },
        {law, drift}},
       // A (-kvj dq) unprojected damps the task motion too: the arm lags by centimetres.
       {"joint damping A (-kvj dq) added without the projector N0^T",
-       [](grading::Hw2Api& api) { api.p2.control = &with<&Mistakes::damping_not_projected>; },
+       "the joint damping goes through N0^T, so that it cannot act on the task",
+       [](Hw2Api& api) { api.p2.control = &with<&Mistakes::damping_not_projected>; },
        {law, position, orientation}},
+      // Without p the task sags under the share of gravity the task carries: link7 tracks
+      // centimetres below its path, tilted, and the arm's joints take another path, past a limit.
+      {"p, the gravity at the task, left out of the task force",
+       "F = Lambda0 (...) + p, with p = Jbar0^T g; N0^T g alone compensates only the null space's share",
+       [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_p>; },
+       {law, position, orientation, limits}},
       // The run feeds the student's 2(a) to the controller, yet the missing terms are
       // -a'^2 lambda_d, along lambda_d: the part of lambdaddot_d that only keeps |lambda_d| = 1,
       // which E_r^+ (E_r^T lambda = 0) projects away. Only the formula test sees it.
       {"2(a) without the -sin(a) a'^2 term of the chain rule",
-       [](grading::Hw2Api& api) { api.p2.desired_acceleration = &acceleration_without_a_dot_squared; },
+       "d^2/dt^2 sin(a) = cos(a) a'' - sin(a) a'^2 (and likewise for cos(a))",
+       [](Hw2Api& api) {
+         api.p2.desired_acceleration = [right = api.p2.desired_acceleration](double t) {
+           return without_a_dot_squared(right, t);
+         };
+       },
        {a}},
   };
 }
 
-}  // namespace opspace::mutants
+}  // namespace opspace::grading

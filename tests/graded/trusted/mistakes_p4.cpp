@@ -1,9 +1,10 @@
-// Known-wrong answers of problem 4. Each changes the reference in one place.
+// Known mistakes of problem 4. Each replaces one function, or wraps the law it is given (the
+// reference solutions, or the grader's oracle).
 #include <opspace/hw2/p4.hpp>
 
-#include "mutants.hpp"
+#include "mistakes.hpp"
 
-namespace opspace::mutants {
+namespace opspace::grading {
 
 namespace {
 
@@ -35,15 +36,12 @@ SingularityType type_over_all_joint_motions(const Kinematics& k, const Eigen::Ve
                                                                        : SingularityType::kTypeII;
 }
 
-// v. The two potentials swapped: joint 1 turned for Z0, the arm retracted for Y0.
-Eigen::Vector3d potentials_swapped(Target target, const State& s, const Goal& goal) {
-  return hw2::p4::control(target == Target::kAlongZ0 ? Target::kAlongY0 : Target::kAlongZ0, s, goal);
-}
+using Law = Fn<decltype(hw2::p4::control)>;
 
 // v. The Z0 potential with its minimum at the stretched arm (q_d[2] = 0): it pulls the elbow
 // into the lock instead of out of it.
-Eigen::Vector3d z0_potential_stretches(Target target, const State& s, const Goal& goal) {
-  const Eigen::Vector3d tau = hw2::p4::control(target, s, goal);
+Eigen::Vector3d z0_potential_stretches(const Law& law, Target target, const State& s, const Goal& goal) {
+  const Eigen::Vector3d tau = law(target, s, goal);
   if (target != Target::kAlongZ0) return tau;
   // The reference pulls joint 3 toward kRetractedElbow; move that minimum to 0.
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();
@@ -53,7 +51,7 @@ Eigen::Vector3d z0_potential_stretches(Target target, const State& s, const Goal
 
 }  // namespace
 
-std::vector<Mutant> p4_mutants() {
+std::vector<Mistake> mistakes_4() {
   const std::string dirs = "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null "
                            "space of Jv elsewhere";
   const std::string types0 = "iv. at theta = (0, 90 deg, 0) the elbow lock Z0 is Type I and the overhead lock "
@@ -67,22 +65,34 @@ std::vector<Mutant> p4_mutants() {
                            "never does";
   return {
       {"singular directions from the right singular vectors V",
-       [](grading::Hw2Api& api) { api.p4.singular_directions = &singular_directions_from_v; },
+       "a singular direction lives in the tip's space: the columns of U (Jv = U S V^T) whose sigma vanishes",
+       [](Hw2Api& api) { api.p4.singular_directions = &singular_directions_from_v; },
        {dirs}},
       // Every overhead lock then looks Type I: joint 1 combined with joint 2 does move the tip
       // along the plane's normal at second order, but that motion is not a self-motion.
       {"Type I/II tested over all joint motions, not the self-motions",
-       [](grading::Hw2Api& api) { api.p4.singularity_type = &type_over_all_joint_motions; },
+       "the type tests the self-motions only: C_u = Nb^T H_u Nb with Nb a basis of the null space of Jv",
+       [](Hw2Api& api) { api.p4.singularity_type = &type_over_all_joint_motions; },
        {types0, types}},
       // Turning joint 1 does not unlock a stretched elbow, and retracting the arm does not turn
       // its plane: neither target is reached.
       {"the Z0 and Y0 potentials swapped",
-       [](grading::Hw2Api& api) { api.p4.control = &potentials_swapped; },
+       "for Z0 the potential retracts the elbow (q_d[2] = kRetractedElbow); for Y0 it turns joint 1 (q_d[0] = kTurnedJoint1)",
+       [](Hw2Api& api) {
+         api.p4.control = [law = api.p4.control](Target target, const State& s, const Goal& g) {
+           return law(target == Target::kAlongZ0 ? Target::kAlongY0 : Target::kAlongZ0, s, g);
+         };
+       },
        {law, simz, simy}},
       {"the Z0 potential's minimum at the stretched arm",
-       [](grading::Hw2Api& api) { api.p4.control = &z0_potential_stretches; },
+       "the Z0 potential's minimum is the retracted arm, q_d[2] = kRetractedElbow, which leads out of the lock",
+       [](Hw2Api& api) {
+         api.p4.control = [law = api.p4.control](Target target, const State& s, const Goal& g) {
+           return z0_potential_stretches(law, target, s, g);
+         };
+       },
        {law, simz}},
   };
 }
 
-}  // namespace opspace::mutants
+}  // namespace opspace::grading

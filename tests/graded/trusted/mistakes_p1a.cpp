@@ -1,0 +1,63 @@
+// Known mistakes of problem 1a. Each replaces one function by a wrong formula.
+#include "mistakes.hpp"
+
+namespace opspace::grading {
+
+namespace {
+
+using hw2::p1a::DisplacementSplit;
+
+}  // namespace
+
+std::vector<Mistake> mistakes_1a() {
+  const std::string mass = "ii. the mass matrix reproduces the kinetic energy of both links";
+  return {
+      {"A without the coupling term: m2 left off the diagonal",
+       "link 2 rides on link 1, so T = 1/2 m1 d1dot^2 + 1/2 m2 (d1dot + d2dot)^2 and A = [m1 + m2, m2; m2, m2]",
+       [](Hw2Api& api) {
+         api.p1a.mass_matrix = [](double m1, double m2) { return Eigen::Matrix2d(Eigen::Vector2d(m1 + m2, m2).asDiagonal()); };
+       },
+       {mass}},
+      {"A with m1 alone in its first entry",
+       "the first entry is m1 + m2: moving d1 carries link 2 along",
+       [](Hw2Api& api) {
+         api.p1a.mass_matrix = [](double m1, double m2) { return (Eigen::Matrix2d() << m1, m2, m2, m2).finished(); };
+       },
+       {mass}},
+      {"J+ = J^T, without (J J^T)^-1",
+       "J+ = J^T (J J^T)^-1",
+       [](Hw2Api& api) { api.p1a.pseudo_inverse = [](const Eigen::RowVector2d& J) { return Eigen::Vector2d(J.transpose()); }; },
+       {"iv. the pseudo-inverse is J^T (J J^T)^-1"}},
+      {"J# built with W where W^-1 belongs",
+       "J# = W^-1 J^T (J W^-1 J^T)^-1: the inverse of the weight",
+       [](Hw2Api& api) {
+         api.p1a.weighted_inverse = [](const Eigen::RowVector2d& J, const Eigen::Matrix2d& W) {
+           const Eigen::Vector2d W_Jt = W * J.transpose();
+           return Eigen::Vector2d(W_Jt / J.dot(W_Jt));
+         };
+       },
+       {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1"}},
+      // J+ J is symmetric, so only the projectors of J# and Jbar reveal the transpose.
+      {"the projector written as I - J^T J_inv^T",
+       "the joint-space projector is I - J_inv J; I - J^T J_inv^T is its transpose, which acts on torques",
+       [](Hw2Api& api) {
+         api.p1a.nullspace_projector = [](const Eigen::RowVector2d& J, const Eigen::Vector2d& J_inv) {
+           return Eigen::Matrix2d(Eigen::Matrix2d::Identity() - J.transpose() * J_inv.transpose());
+         };
+       },
+       {"v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector"}},
+      {"question vi answered with J+ for both splits",
+       "the second split uses Jbar = A^-1 J^T (J A^-1 J^T)^-1 with A = A(m1, m2): it moves only d2",
+       [](Hw2Api& api) {
+         api.p1a.split_displacement = [](double, double, double dx) {
+           DisplacementSplit split;
+           split.with_pseudo_inverse = Eigen::Vector2d(0.5, 0.5) * dx;
+           split.with_inertia_weighted = split.with_pseudo_inverse;
+           return split;
+         };
+       },
+       {"vi. J+ shares dx equally between the joints, Jbar moves only joint 2"}},
+  };
+}
+
+}  // namespace opspace::grading

@@ -1,0 +1,110 @@
+// Known mistakes of problem 1b. Each wraps the control law it is given (the reference
+// solutions, or the grader's oracle) and changes it in one place.
+#include "mistakes.hpp"
+
+namespace opspace::grading {
+
+namespace {
+
+using hw2::p1b::Goal;
+using hw2::p1b::Matrix6d;
+using hw2::p1b::Part;
+using hw2::p1b::State;
+using hw2::p1b::Vector6d;
+
+Matrix6d pseudo_inverse_projector(const State& s) {
+  const Eigen::Matrix<double, 6, 3> Jv_pinv = s.Jv.transpose() * (s.Jv * s.Jv.transpose()).inverse();
+  return Matrix6d::Identity() - s.Jv.transpose() * Jv_pinv.transpose();
+}
+
+Matrix6d consistent_projector(const State& s) { return Matrix6d::Identity() - s.Jv.transpose() * s.Jbar_v.transpose(); }
+
+// The projector of a null-space part (identity for PART1).
+Matrix6d projector(Part part, const State& s) {
+  if (part == Part::kPseudoInverseNullspace) return pseudo_inverse_projector(s);
+  if (part == Part::kDynamicallyConsistentNullspace) return consistent_projector(s);
+  return Matrix6d::Identity();
+}
+
+bool nullspace_part(Part part) {
+  return part == Part::kPseudoInverseNullspace || part == Part::kDynamicallyConsistentNullspace;
+}
+
+}  // namespace
+
+std::vector<Mistake> mistakes_1b() {
+  const std::string law1 = "ii. PART1 applies Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p) + A (-kvj dq)";
+  const std::string law1n = "ii. without joint damping the law is Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p)";
+  const std::string sim1 = "ii. in simulation PART1 brings the tip to x_d and holds it";
+  const std::string law2 = "iii. PART2 projects the joint task with I - Jv^T Jv+^T";
+  const std::string law3 = "iv. PART3 projects the joint task with I - Jv^T Jbar_v^T";
+  const std::string sim3 = "iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d";
+  const std::string ratio = "iii. in simulation the PART2 tip drifts at least ten times more than PART3's";
+  return {
+      // PART3 then drifts like PART2: the ratio test sees two equal drifts.
+      {"PART3 projects with the pseudo-inverse, like PART2",
+       "the dynamically consistent projector of PART3 uses Jbar_v: I - Jv^T Jbar_v^T",
+       [](Hw2Api& api) {
+         api.p1b.control = [law = api.p1b.control](Part part, const State& s, const Goal& g) {
+           return law(part == Part::kDynamicallyConsistentNullspace ? Part::kPseudoInverseNullspace : part, s, g);
+         };
+       },
+       {law3, sim3, ratio}},
+      // The tip is still held (the projection is dynamically consistent) but joint 2 sags under
+      // the gravity left uncompensated in the null space.
+      {"the null-space task without g",
+       "the joint task is A (-kpj (q - q_d) - kvj dq) + g: gravity compensation goes through the projector",
+       [](Hw2Api& api) {
+         api.p1b.control = [law = api.p1b.control](Part part, const State& s, const Goal& g) {
+           const Vector6d tau = law(part, s, g);
+           return nullspace_part(part) ? Vector6d(tau - projector(part, s) * s.g) : tau;
+         };
+       },
+       {law2, law3, sim3}},
+      // The unprojected share (I - P) g = Jv^T J_inv^T g compensates gravity at the tip a second
+      // time: in PART3 the tip is pushed by p, tens of newtons against a stiffness of kpx Lambda_v,
+      // and held centimetres off x_d, so PART3 no longer holds its tip nor drifts ten times less.
+      {"g added outside the projector",
+       "g belongs to the joint task inside [I - Jv^T J_inv^T] (...); unprojected, it adds Jv^T J_inv^T g at the tip",
+       [](Hw2Api& api) {
+         api.p1b.control = [law = api.p1b.control](Part part, const State& s, const Goal& g) {
+           const Vector6d tau = law(part, s, g);
+           return nullspace_part(part) ? Vector6d(tau + (Matrix6d::Identity() - projector(part, s)) * s.g) : tau;
+         };
+       },
+       {law2, law3, sim3, ratio}},
+      {"PART3's projector written as Jv^T Jbar_v^T, without I -",
+       "the projector is I - Jv^T Jbar_v^T: the joint task acts in the null space of the tip task",
+       [](Hw2Api& api) {
+         api.p1b.control = [law = api.p1b.control](Part part, const State& s, const Goal& g) {
+           if (part != Part::kDynamicallyConsistentNullspace) return law(part, s, g);
+           const Vector6d tip = law(Part::kTipPdWithoutJointDamping, s, g);
+           const Vector6d joint = s.A * (-g.kpj * (s.q - g.q_d) - g.kvj * s.dq) + s.g;
+           return Vector6d(tip + s.Jv.transpose() * s.Jbar_v.transpose() * joint);
+         };
+       },
+       {law3, sim3, ratio}},
+      // Question ii's lesson: without damping the arm swings freely in the null space (its
+      // gravity there is not compensated) and the Coriolis forces of that swing move the tip.
+      {"PART1 without the joint damping A (-kvj dq)",
+       "PART1 adds A (-kvj dq) to the tip PD",
+       [](Hw2Api& api) {
+         api.p1b.control = [law = api.p1b.control](Part part, const State& s, const Goal& g) {
+           return law(part == Part::kTipPd ? Part::kTipPdWithoutJointDamping : part, s, g);
+         };
+       },
+       {law1, sim1}},
+      // Without p the tip sags under gravity by |p| / (kpx Lambda_v), centimetres, in every part:
+      // PART1 and PART3 miss their bounds and PART3 drifts as much as PART2.
+      {"p, the gravity at the tip, left out of the task force",
+       "the task force is F = Lambda_v (-kpx (x - x_d) - kvx dx) + p, with p = Jbar_v^T g",
+       [](Hw2Api& api) {
+         api.p1b.control = [law = api.p1b.control](Part part, const State& s, const Goal& g) {
+           return Vector6d(law(part, s, g) - s.Jv.transpose() * s.p);
+         };
+       },
+       {law1, law1n, law2, law3, sim1, sim3, ratio}},
+  };
+}
+
+}  // namespace opspace::grading
