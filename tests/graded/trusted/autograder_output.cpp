@@ -47,7 +47,7 @@ std::string xml_text(const std::string& text) {
 std::string feedback(const TestResult& r) {
   std::string text;
   for (const std::string& f : r.findings) text += "- " + f + "\n";
-  if (r.score < r.test->points && !r.interrupted) text += "hint: " + r.test->hint + "\n";
+  if (r.score < r.test->points && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";
   if (!r.printed.empty()) text += "your code printed:\n" + r.printed + "\n";
   return text;
 }

@@ -63,6 +63,8 @@ struct TestResult {
   /// The student's code crashed, timed out, exited or sent garbage during this test: the
   /// findings say what happened, and no formula hint applies.
   bool interrupted = false;
+  /// A known mistake was named for this test: the likely-mistake line replaces the hint.
+  bool diagnosed = false;
   std::string printed;  ///< what the student's code printed during the test (sanitized, cut)
 };
 

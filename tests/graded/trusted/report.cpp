@@ -54,7 +54,7 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems)
           << r.test->name << "\n";
       if (r.score < r.test->points) {
         for (const std::string& finding : r.findings) out << "          - " << finding << "\n";
-        if (!r.interrupted) out << "          hint: " << r.test->hint << "\n";
+        if (!r.interrupted && !r.diagnosed) out << "          hint: " << r.test->hint << "\n";
       }
       if (!r.printed.empty()) out << "          your code printed:\n" << quoted(r.printed);
     }
@@ -71,6 +71,10 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems)
     out << "  " << p.problem->key << "  " << points(p.score) << " / " << points(p.max_score) << "\n";
   }
   out << "Total: " << points(total) << " / " << points(total_max) << " points\n";
+  if (total == 0.0 && problems.size() > 1 && problems.front().problem->key == "1a") {
+    out << "Where to start: open exercises/p1a.cpp (the PP robot's formulas, guide docs/problem1a.md)\n"
+        << "and grade it alone: bash scripts/grade --problem 1a\n";
+  }
 }
 
 }  // namespace opspace::grading
