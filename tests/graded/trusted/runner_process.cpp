@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "answers.hpp"
+
 namespace opspace::grading {
 
 namespace {
@@ -194,20 +196,16 @@ std::vector<unsigned char> RunnerProcess::call(protocol::Function function, cons
 
   protocol::Header answer;
   read_answer(&answer, sizeof answer);
-  if (answer.magic != protocol::kAnswerMagic) fail("your code wrote something that is not an answer on the grader's channel");
-  if (answer.sequence != request.sequence)
-    fail("your code sent an answer to request " + std::to_string(answer.sequence) + " while the grader asked request " +
-         std::to_string(request.sequence));
-  const auto status = static_cast<protocol::Status>(answer.code);
-  if (status == protocol::Status::kException) {
-    if (answer.size > protocol::kMaxExceptionText) fail("your code sent an exception text longer than allowed");
-    std::string text(answer.size, '\0');
-    read_answer(text.data(), text.size());
-    throw StudentException("your code threw an exception: " + sanitize(text, 200, text.size()));
+  std::string why;
+  switch (check_answer(answer, request.sequence, value_size, why)) {
+    case AnswerKind::kRejected: fail(why);
+    case AnswerKind::kException: {
+      std::string text(answer.size, '\0');
+      read_answer(text.data(), text.size());
+      throw StudentException("your code threw an exception: " + sanitize(text, 200, text.size()));
+    }
+    case AnswerKind::kValue: break;
   }
-  if (status != protocol::Status::kValue) fail("your code's runner did not know the function it was asked for");
-  if (answer.size != value_size)
-    fail("your code sent " + std::to_string(answer.size) + " bytes where the answer has " + std::to_string(value_size));
   std::vector<unsigned char> value(value_size);
   read_answer(value.data(), value.size());
   return value;
