@@ -1,0 +1,84 @@
+// libFuzzer target: the grader's reading of what a runner sends (tests/graded/trusted/
+// answers.cpp, runner_process.cpp's sanitize()): arbitrary bytes as the answer to a request.
+// Input: one byte choosing the function asked (of the 22), then a 16-byte answer header, then
+// the payload. check_answer() must accept only a header for request 1 with the exact size of
+// that function's value (or an exception text of at most 400 bytes); decode_answer() must
+// decode every payload of the right size or refuse it with DecodeError (a true/false byte that
+// is neither 0 nor 1); an exception text, sanitized, must hold no control character but newline
+// and tab and stay within its limit. Anything else (another exception, a sanitizer report, a
+// hang, an allocation the size of a header's claim) is a finding.
+// Seeds: tests/fuzz/seeds/protocol (well-formed answers of several functions).
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "answers.hpp"
+#include "protocol/codec.hpp"
+#include "runner_process.hpp"
+
+namespace {
+
+using opspace::protocol::Function;
+
+constexpr Function kFunctions[] = {
+    Function::kP1aDegreesOfFreedom,   Function::kP1aMassMatrix,          Function::kP1aTaskJacobian,
+    Function::kP1aPseudoInverse,      Function::kP1aWeightedInverse,     Function::kP1aInertiaWeightedInverse,
+    Function::kP1aNullspaceProjector, Function::kP1aInverseKinematicsStep, Function::kP1aSplitDisplacement,
+    Function::kP1bControl,            Function::kP2DesiredAcceleration,  Function::kP2DesiredTwistAcceleration,
+    Function::kP2Control,             Function::kP3MotionSelection,      Function::kP3ForceSelection,
+    Function::kP3Control,             Function::kP4DegreesOfFreedom,     Function::kP4SingularDirections,
+    Function::kP4MovingDirections,    Function::kP4RotationAxes,         Function::kP4SingularityType,
+    Function::kP4Control};
+
+void require(bool ok, const char* what) {
+  if (ok) return;
+  std::fprintf(stderr, "fuzz-protocol: %s\n", what);
+  std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  namespace grading = opspace::grading;
+  if (size < 1 + sizeof(opspace::protocol::Header)) return 0;
+  const Function function = kFunctions[data[0] % (sizeof kFunctions / sizeof kFunctions[0])];
+  opspace::protocol::Header header;
+  std::memcpy(&header, data + 1, sizeof header);
+  const std::vector<unsigned char> payload(data + 1 + sizeof header, data + size);
+  const std::size_t value_size = grading::answer_size(function);
+  require(value_size > 0, "a function of the table has no answer size");
+
+  std::string why;
+  switch (grading::check_answer(header, 1, value_size, why)) {
+    case grading::AnswerKind::kRejected:
+      require(!why.empty(), "a rejected answer without a reason");
+      return 0;
+    case grading::AnswerKind::kException: {
+      require(header.size <= opspace::protocol::kMaxExceptionText, "an exception text over its limit was accepted");
+      const std::string text(payload.begin(), payload.begin() + std::min<std::size_t>(payload.size(), header.size));
+      const std::string shown = grading::sanitize(text, 200, text.size());
+      for (const char c : shown) {
+        const auto u = static_cast<unsigned char>(c);
+        require(!((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f), "a control character reached the report");
+      }
+      require(shown.size() <= 200 + 64, "an exception text was not cut short");
+      return 0;
+    }
+    case grading::AnswerKind::kValue:
+      require(header.size == value_size, "an answer of the wrong size was accepted");
+      break;
+  }
+  if (payload.size() < value_size) return 0;  // the grader would wait for the rest, then time out
+  const std::vector<unsigned char> value(payload.begin(), payload.begin() + static_cast<std::ptrdiff_t>(value_size));
+  try {
+    const std::vector<double> numbers = grading::decode_answer(function, value);
+    require(!numbers.empty(), "a decoded answer holds no number");
+  } catch (const opspace::protocol::DecodeError&) {
+    // a true/false byte that is neither 0 nor 1: refused, as it should be
+  }
+  return 0;
+}
