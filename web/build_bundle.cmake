@@ -14,10 +14,13 @@ function(give_up why)
   return()
 endfunction()
 
-execute_process(COMMAND ${NPM} ci --no-audit --no-fund --loglevel=error
+# --engine-strict: a package that needs a newer node than this machine's fails here, at build
+# time, with npm's EBADENGINE error, not later when the replay test runs.
+execute_process(COMMAND ${NPM} ci --engine-strict --no-audit --no-fund --loglevel=error
                 WORKING_DIRECTORY ${BINARY_DIR} RESULT_VARIABLE npm_status)
 if(NOT npm_status EQUAL 0)
-  give_up("`npm ci` failed (status ${npm_status}): is the npm registry reachable?")
+  give_up("`npm ci` failed (status ${npm_status}): is the npm registry reachable? "
+          "Does a package need a newer node (EBADENGINE above)?")
   return()
 endif()
 execute_process(COMMAND ${NODE} build.mjs ${BUNDLE} WORKING_DIRECTORY ${BINARY_DIR} RESULT_VARIABLE esbuild_status)
