@@ -3,6 +3,8 @@
 // refused with a UrdfError that names the file, the line where known, and the cause.
 #include <doctest/doctest.h>
 
+#include <pthread.h>
+
 #include <cmath>
 #include <string>
 
@@ -126,6 +128,7 @@ TEST_CASE("each broken URDF is refused with its file, line and cause") {
       {"empty.urdf", ": malformed XML: Error document empty."},
       {"malformed_xml.urdf", ":6: malformed XML: Error reading end tag."},
       {"not_a_robot.urdf", ":3: the document element must be <robot>"},
+      {"unnamed_robot.urdf", ":3: the <robot> has no name"},
       {"unknown_joint_type.urdf", ":6: joint 'shoulder' has unknown type 'rotational'"},
       {"floating.urdf", ":6: joint 'free' is floating: not supported"},
       {"planar.urdf", ":6: joint 'slide' is planar: not supported"},
@@ -136,7 +139,14 @@ TEST_CASE("each broken URDF is refused with its file, line and cause") {
       {"undeclared_link.urdf", ":5: joint 'j1' refers to link 'arm', which is not declared"},
       {"negative_mass.urdf", ":5: link 'arm' has mass -2 kg; a mass must be >= 0"},
       {"indefinite_inertia.urdf", ":6: link 'arm' has an inertia that is not positive definite"},
-      {"missing_limit.urdf", ": urdfdom rejected the file: "},
+      // urdfdom's messages give no line: the line is that of the joint or link they name.
+      {"missing_limit.urdf", ":6: urdfdom rejected the file: Joint [j1] is of type REVOLUTE but it does not specify limits"},
+      // Found by fuzzing (docs/fuzzing.md): values urdfdom accepts that the model cannot use.
+      {"negative_effort.urdf", ":6: joint 'j1' has effort -0.1 and velocity 10; both limits must be >= 0"},
+      {"inverted_limits.urdf", ":5: joint 'j1' has its lower limit 0.5 above its upper limit -0.5"},
+      {"negative_radius.urdf", ":5: link 'arm' has a sphere of radius -0.1: sizes must be >= 0"},
+      {"placement_overflow.urdf", ":12: joint 'j2' has a placement that overflows (is not finite)"},
+      {"mass_overflow.urdf", ":10: link 'tool' has mass properties that overflow (are not finite)"},
   };
   for (const Case& c : table) {
     const std::string path = broken(c.file);
@@ -144,4 +154,110 @@ TEST_CASE("each broken URDF is refused with its file, line and cause") {
     const std::string what = load_error(path);
     CHECK_MESSAGE(what.rfind(path + c.message, 0) == 0, "expected \"", path + c.message, "...\", got \"", what, "\"");
   }
+}
+
+namespace {
+
+/// The message of the UrdfError that parsing `xml` throws ("" if none is thrown).
+std::string parse_error(const std::string& xml) {
+  try {
+    parse_urdf(xml, "<string>");
+  } catch (const UrdfError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// A one-link robot whose link holds `inner` (URDF allows unknown elements: urdfdom skips them).
+std::string robot_with(const std::string& inner) {
+  return "<robot name=\"r\">\n<link name=\"base\">" + inner + "</link>\n</robot>";
+}
+
+/// `depth` nested <x> elements.
+std::string nested(int depth) {
+  std::string open, close;
+  for (int i = 0; i < depth; ++i) {
+    open += "<x>";
+    close += "</x>";
+  }
+  return open + close;
+}
+
+/// An element with `count` attributes.
+std::string with_attributes(int count) {
+  std::string e = "<x";
+  for (int i = 0; i < count; ++i) e += " a" + std::to_string(i) + "=\"1\"";
+  return e + "/>";
+}
+
+}  // namespace
+
+TEST_CASE("nesting and attribute counts that the XML parsers pay for with stack or time are refused") {
+  // TinyXML recurses once per nesting level (100000 levels overflowed the stack) and compares
+  // each attribute with the element's others (100000 attributes took 170 s): check_markup caps
+  // both at 100 before any parser runs. <robot> and <link> are 2 levels, so 98 more reach 100.
+  CHECK(parse_error(robot_with(nested(98))).empty());
+  CHECK(parse_error(robot_with(nested(99))) == "<string>:2: elements nested more than 100 deep (a URDF nests about 5)");
+  CHECK(parse_error(robot_with(with_attributes(100))).empty());
+  CHECK(parse_error(robot_with(with_attributes(101))) ==
+        "<string>:2: an element with more than 100 attributes (a URDF element has at most 6)");
+  // Comments and CDATA hold no tags; in a quoted value '=' is no attribute, '>' no tag's end.
+  CHECK(parse_error(robot_with("<!-- " + nested(200) + " --><![CDATA[" + nested(200) + "]]><x v=\"" +
+                               std::string(200, '=') + ">\"/>"))
+            .empty());
+}
+
+namespace {
+
+/// A chain of `n` links joined by continuous joints along z, 0.1 m apart.
+std::string chain(int n) {
+  std::string xml = "<robot name=\"chain\">\n<link name=\"l0\"/>\n";
+  for (int i = 1; i <= n; ++i) {
+    const std::string k = std::to_string(i), parent = std::to_string(i - 1);
+    xml += "<link name=\"l" + k + "\"/><joint name=\"j" + k + "\" type=\"continuous\"><parent link=\"l" + parent +
+           "\"/><child link=\"l" + k + "\"/><origin xyz=\"0 0 0.1\"/></joint>\n";
+  }
+  return xml + "</robot>";
+}
+
+struct ChainRun {
+  int n = 0;
+  int dof = -1;
+  std::string error;
+};
+
+void* load_chain(void* arg) {
+  auto* run = static_cast<ChainRun*>(arg);
+  try {
+    run->dof = parse_urdf(chain(run->n), "<chain>").dof();
+  } catch (const std::exception& e) {
+    run->error = e.what();
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("a long chain of links loads without exhausting the call stack") {
+  // Found by fuzzing (docs/fuzzing.md): the links were walked by recursion, two frames per
+  // link, so 5000 links overflowed the 8 MB stack under ASan. On a 256 kB stack the
+  // recursion failed at a few hundred links (a frame holds transforms: > 256 kB / 2000);
+  // a walk with its own stack needs the same small stack for any length.
+  ChainRun run;
+  run.n = 2000;
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  pthread_attr_setstacksize(&attr, 256 * 1024);
+  pthread_t thread;
+  REQUIRE(pthread_create(&thread, &attr, &load_chain, &run) == 0);
+  pthread_join(thread, nullptr);
+  pthread_attr_destroy(&attr);
+  CHECK(run.error.empty());
+  CHECK(run.dof == 2000);
+}
+
+TEST_CASE("a path that is not a URDF file is refused before it fills the memory") {
+  // A folder opens but cannot be read; /dev/zero never ends: load_urdf stops after 16 MB.
+  CHECK(load_error(OPSPACE_TEST_DATA_DIR) == std::string(OPSPACE_TEST_DATA_DIR) + ": cannot read the file (Is a directory)");
+  CHECK(load_error("/dev/zero") == "/dev/zero: larger than 16 MB: not a URDF (meshes live in files of their own)");
 }
