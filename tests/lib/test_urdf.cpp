@@ -6,6 +6,9 @@
 #include <pthread.h>
 
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "opspace/dynamics.hpp"
@@ -207,6 +210,14 @@ TEST_CASE("nesting and attribute counts that the XML parsers pay for with stack 
             .empty());
 }
 
+TEST_CASE("control characters of a name are written as hex escapes in the message") {
+  // Names are the file's text: ESC [31m in a joint name would turn the reader's terminal red.
+  const std::string xml = "<robot name=\"r\"><link name=\"base\"/><link name=\"arm\"/><joint name=\"j\x1b[31m\" "
+                          "type=\"rotational\"><parent link=\"base\"/><child link=\"arm\"/></joint></robot>";
+  CHECK(parse_error(xml) ==
+        "<string>:1: joint 'j\\x1b[31m' has unknown type 'rotational' (expected revolute, continuous, prismatic or fixed)");
+}
+
 namespace {
 
 /// A chain of `n` links joined by continuous joints along z, 0.1 m apart.
@@ -239,10 +250,10 @@ void* load_chain(void* arg) {
 }  // namespace
 
 TEST_CASE("a long chain of links loads without exhausting the call stack") {
-  // Found by fuzzing (docs/fuzzing.md): the links were walked by recursion, two frames per
-  // link, so 5000 links overflowed the 8 MB stack under ASan. On a 256 kB stack the
-  // recursion failed at a few hundred links (a frame holds transforms: > 256 kB / 2000);
-  // a walk with its own stack needs the same small stack for any length.
+  // Found in review of the fuzzing (docs/fuzzing.md): the links were walked by recursion,
+  // two frames per link, and 5000 links overflowed the 8 MB stack under ASan. On a 256 kB
+  // stack the recursion failed between 200 and 300 links (release build); the walk with a
+  // stack of its own loads 2000 there, as it would any length.
   ChainRun run;
   run.n = 2000;
   pthread_attr_t attr;
@@ -257,7 +268,15 @@ TEST_CASE("a long chain of links loads without exhausting the call stack") {
 }
 
 TEST_CASE("a path that is not a URDF file is refused before it fills the memory") {
-  // A folder opens but cannot be read; /dev/zero never ends: load_urdf stops after 16 MB.
+  // A folder opens but cannot be read.
   CHECK(load_error(OPSPACE_TEST_DATA_DIR) == std::string(OPSPACE_TEST_DATA_DIR) + ": cannot read the file (Is a directory)");
-  CHECK(load_error("/dev/zero") == "/dev/zero: larger than 16 MB: not a URDF (meshes live in files of their own)");
+  // load_urdf reads at most 16 MB: one byte more is refused (a sparse file: no disk used). The
+  // same bound stops /dev/zero, which filled the memory before; it is not read here, so that
+  // a regression fails this test instead of the machine.
+  const std::filesystem::path big = std::filesystem::temp_directory_path() / "opspace-test-urdf-17MB.urdf";
+  std::ofstream(big).close();
+  std::filesystem::resize_file(big, (std::uintmax_t{16} << 20) + 1);
+  const std::string what = load_error(big.string());
+  std::filesystem::remove(big);
+  CHECK(what == big.string() + ": larger than 16 MB: not a URDF (meshes live in files of their own)");
 }
