@@ -1,7 +1,8 @@
 // URDF loading in three passes:
-//  0. A scan of the markup bounds what the XML parsers would otherwise pay for with the call
-//     stack or quadratic time (TinyXML recurses once per nesting level and compares each new
-//     attribute with the element's others): nesting depth and attributes per element.
+//  0. Scans of the text: it must be UTF-8 without NUL bytes (TinyXML reads past the end of
+//     a cut UTF-8 sequence), and the markup's nesting depth and attributes per element are
+//     bounded (TinyXML recurses once per level and compares each new attribute with the
+//     element's others: the call stack or quadratic time would pay for them).
 //  1. TinyXML (which urdfdom itself depends on) checks what urdfdom does not, or reports
 //     without a line number: well-formed XML, joint types, mimic joints, the tree shape
 //     (one parent per link, one root, no loop). It also records each link's and joint's line.
@@ -51,6 +52,55 @@ std::string printable(const std::string& text) {
 /// "<source>:<line>: <cause>", or "<source>: <cause>" when the line is unknown (line <= 0).
 [[noreturn]] void fail(const std::string& source, int line, const std::string& cause) {
   throw UrdfError(source + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + printable(cause));
+}
+
+/// Length of the well-formed UTF-8 character at xml[i] (Unicode, table 3-7: a lead byte, a
+/// second byte in a range the lead sets, then bytes in 0x80-0xbf); 0 if it is malformed.
+std::size_t utf8_length(const std::string& xml, std::size_t i) {
+  const auto at = [&](std::size_t k) -> unsigned { return k < xml.size() ? static_cast<unsigned char>(xml[k]) : 0u; };
+  const unsigned c = at(i);
+  if (c < 0x80) return 1;
+  std::size_t length = 0;
+  unsigned low = 0x80, high = 0xbf;
+  if (c >= 0xc2 && c <= 0xdf) {
+    length = 2;
+  } else if (c >= 0xe0 && c <= 0xef) {
+    length = 3;
+    low = c == 0xe0 ? 0xa0 : low;   // no overlong forms
+    high = c == 0xed ? 0x9f : high;  // no surrogates
+  } else if (c >= 0xf0 && c <= 0xf4) {
+    length = 4;
+    low = c == 0xf0 ? 0x90 : low;
+    high = c == 0xf4 ? 0x8f : high;  // nothing above U+10FFFF
+  } else {
+    return 0;
+  }
+  if (at(i + 1) < low || at(i + 1) > high) return 0;
+  for (std::size_t k = 2; k < length; ++k) {
+    if (at(i + k) < 0x80 || at(i + k) > 0xbf) return 0;
+  }
+  return length;
+}
+
+/// Pass 0, first: the text is UTF-8 (what both parsers read it as) without NUL bytes (where
+/// they would stop reading). TinyXML steps over a character by the length its first byte
+/// announces, so a sequence cut short by the end of the text made it read past the end (found
+/// by fuzz-urdf under AddressSanitizer).
+void check_encoding(const std::string& xml, const std::string& source) {
+  int line = 1;
+  for (std::size_t i = 0; i < xml.size();) {
+    const char c = xml[i];
+    const std::size_t length = c == '\0' ? 0 : utf8_length(xml, i);
+    if (length == 0) {
+      const char* hex = "0123456789abcdef";
+      const auto byte = static_cast<unsigned char>(c);
+      fail(source, line, c == '\0' ? std::string("a NUL byte: a URDF is text")
+                                   : std::string("malformed UTF-8 at byte 0x") + hex[byte >> 4] + hex[byte & 15] +
+                                         " (a URDF is UTF-8 text)");
+    }
+    if (c == '\n' || (c == '\r' && (i + 1 == xml.size() || xml[i + 1] != '\n'))) ++line;
+    i += length;
+  }
 }
 
 /// Pass 0's bounds: a URDF nests about 5 elements deep and gives one at most 6 attributes.
@@ -445,6 +495,7 @@ class Builder {
 }  // namespace
 
 Model parse_urdf(const std::string& xml, const std::string& source) {
+  check_encoding(xml, source);
   check_markup(xml, source);
   const Lines lines = check_structure(xml, source);
   urdf::ModelInterfaceSharedPtr tree;

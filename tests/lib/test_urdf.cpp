@@ -150,6 +150,7 @@ TEST_CASE("each broken URDF is refused with its file, line and cause") {
       {"negative_radius.urdf", ":5: link 'arm' has a sphere of radius -0.1: sizes must be >= 0"},
       {"placement_overflow.urdf", ":12: joint 'j2' has a placement that overflows (is not finite)"},
       {"mass_overflow.urdf", ":10: link 'tool' has mass properties that overflow (are not finite)"},
+      {"cut_utf8.urdf", ":6: malformed UTF-8 at byte 0xe4 (a URDF is UTF-8 text)"},
   };
   for (const Case& c : table) {
     const std::string path = broken(c.file);
@@ -208,6 +209,18 @@ TEST_CASE("nesting and attribute counts that the XML parsers pay for with stack 
   CHECK(parse_error(robot_with("<!-- " + nested(200) + " --><![CDATA[" + nested(200) + "]]><x v=\"" +
                                std::string(200, '=') + ">\"/>"))
             .empty());
+}
+
+TEST_CASE("text that is not UTF-8, or holds a NUL byte, is refused at its line") {
+  // TinyXML reads the text as UTF-8 and steps over a character by the length its lead byte
+  // announces: 0xe4 announces three bytes, 0xe9 (Latin-1 e-acute) three. A NUL ends the text
+  // for both parsers, hiding what follows it.
+  const std::string robot = "<robot name=\"r\">\n<link name=\"base\"/>\n</robot>\n";
+  CHECK(parse_error(robot + "<!-- caf\xc3\xa9, 12 \xc2\xb0, \xf0\x9f\xa4\x96 -->").empty());  // UTF-8: accepted
+  CHECK(parse_error(robot + "<!-- caf\xe9 -->") == "<string>:4: malformed UTF-8 at byte 0xe9 (a URDF is UTF-8 text)");
+  CHECK(parse_error(robot + "\xe4\xb8") == "<string>:4: malformed UTF-8 at byte 0xe4 (a URDF is UTF-8 text)");
+  CHECK(parse_error(robot + "\xed\xa0\x80") == "<string>:4: malformed UTF-8 at byte 0xed (a URDF is UTF-8 text)");
+  CHECK(parse_error(robot + std::string(1, '\0') + "<x/>") == "<string>:4: a NUL byte: a URDF is text");
 }
 
 TEST_CASE("control characters of a name are written as hex escapes in the message") {
