@@ -381,8 +381,10 @@ class Builder {
     b.parent = body;
     b.joint_placement = Xj;
     const Eigen::Vector3d axis(joint.axis.x, joint.axis.y, joint.axis.z);
-    if (axis.norm() < 1e-9) fail(model_.source, row, "joint '" + joint.name + "' has a zero axis");
-    b.axis = axis.normalized();
+    // Eigen's stable norm scales first: the squares of (0, 1e308, 0) overflow, and axis / inf
+    // would have been a zero axis (found by fuzz-urdf).
+    if (axis.stableNorm() < 1e-9) fail(model_.source, row, "joint '" + joint.name + "' has a zero axis");
+    b.axis = axis.stableNormalized();
     constexpr double kInf = std::numeric_limits<double>::infinity();
     b.lower = -kInf;
     b.upper = kInf;

@@ -34,7 +34,10 @@ long lines(const std::string& text) {
   return n;
 }
 
-bool finite(const Eigen::Isometry3d& X) { return X.matrix().allFinite(); }
+/// A rigid transform: finite, with a rotation part R^T R = 1 (to rounding).
+bool finite(const Eigen::Isometry3d& X) {
+  return X.matrix().allFinite() && (X.linear().transpose() * X.linear()).isIdentity(1e-9);
+}
 
 void check_inertia(const opspace::Inertia& in, const std::string& who) {
   require(std::isfinite(in.mass) && in.mass >= 0.0, who + ": mass not finite and >= 0");
@@ -44,7 +47,7 @@ void check_inertia(const opspace::Inertia& in, const std::string& who) {
 void check_shape(const opspace::Shape& s, int dof) {
   const std::string who = "shape of link '" + s.link + "'";
   require(s.body >= -1 && s.body < dof, who + ": body index out of range");
-  require(finite(s.placement), who + ": placement not finite");
+  require(finite(s.placement), who + ": placement not a finite rigid transform");
   require(s.box_size.allFinite() && s.box_size.minCoeff() >= 0.0, who + ": box size not finite and >= 0");
   require(std::isfinite(s.radius) && s.radius >= 0.0, who + ": radius not finite and >= 0");
   require(std::isfinite(s.length) && s.length >= 0.0, who + ": length not finite and >= 0");
@@ -57,7 +60,7 @@ void check_model(const opspace::Model& model) {
     const opspace::Body& b = model.bodies[static_cast<std::size_t>(i)];
     const std::string who = "joint '" + b.joint_name + "'";
     require(b.parent >= -1 && b.parent < i, who + ": parent not before it");
-    require(finite(b.joint_placement), who + ": placement not finite");
+    require(finite(b.joint_placement), who + ": placement not a finite rigid transform");
     require(b.axis.allFinite() && std::abs(b.axis.norm() - 1.0) < 1e-12, who + ": axis not a unit vector");
     check_inertia(b.inertia, who);
     require(!std::isnan(b.lower) && !std::isnan(b.upper) && b.lower <= b.upper, who + ": limits not ordered");
@@ -66,7 +69,7 @@ void check_model(const opspace::Model& model) {
   }
   for (const opspace::Frame& f : model.frames) {
     require(f.body >= -1 && f.body < model.dof(), "frame '" + f.name + "': body index out of range");
-    require(finite(f.placement), "frame '" + f.name + "': placement not finite");
+    require(finite(f.placement), "frame '" + f.name + "': placement not a finite rigid transform");
   }
   for (const opspace::Shape& s : model.collisions) check_shape(s, model.dof());
   for (const opspace::Shape& s : model.visuals) check_shape(s, model.dof());

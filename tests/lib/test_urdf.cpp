@@ -112,6 +112,15 @@ TEST_CASE("a fixed joint merges its child's mass into the parent and keeps its f
   CHECK(std::isinf(model.bodies[0].upper));
 }
 
+TEST_CASE("an axis with huge components is normalized without overflow") {
+  // Found by fuzzing (docs/fuzzing.md): |(0, 1e308, 0)|^2 overflows, so the axis divided by its
+  // norm became (0, 0, 0). Its direction is +y, like any positive multiple of (0, 1, 0).
+  const Model model = parse_urdf(R"(<robot name="r"><link name="base"/><link name="arm"/>
+    <joint name="j" type="continuous"><parent link="base"/><child link="arm"/><axis xyz="0 1e308 0"/></joint>
+  </robot>)", "<string>");
+  CHECK(model.bodies[0].axis == Eigen::Vector3d::UnitY());
+}
+
 TEST_CASE("unknown links and joints are refused with their name and the model's") {
   const Model model = load_urdf(robot_path("rrr.urdf"));
   CHECK_THROWS_WITH_AS(model.frame_id("gripper"), doctest::Contains("no link 'gripper' in model 'rrr'"),

@@ -19,11 +19,12 @@ class UrdfError : public std::runtime_error {
 
 /// Reads a URDF file. Supports revolute, continuous, prismatic and fixed joints (fixed
 /// children are merged into their parent body, their frames kept). Throws UrdfError for a
-/// missing or unreadable file or one over 16 MB, malformed XML, elements nested more than 100
-/// deep or with more than 100 attributes, an unsupported joint (floating, planar, mimic), a
-/// loop or a second root, a negative mass, an inertia that is not positive definite, a lower
-/// limit above the upper one, a negative effort or velocity limit, a negative shape size, or
-/// numbers whose sums or products overflow (docs/model.md, docs/fuzzing.md).
+/// missing or unreadable file or one over 16 MB, text that is not UTF-8 or holds a NUL byte,
+/// malformed XML, elements nested more than 100 deep or with more than 100 attributes, an
+/// unsupported joint (floating, planar, mimic), a loop or a second root, a negative mass, an
+/// inertia that is not positive definite, a lower limit above the upper one, a negative
+/// effort or velocity limit, a negative shape size, or numbers whose sums or products
+/// overflow (docs/model.md, docs/fuzzing.md).
 Model load_urdf(const std::string& path);
 
 /// The same from URDF text (load_urdf reads the file, then calls it); `source` names the text
