@@ -33,18 +33,20 @@ namespace opspace {
 
 namespace {
 
+/// The two hexadecimal digits of `c`'s byte.
+std::string hex(char c) {
+  const char* digits = "0123456789abcdef";
+  const auto byte = static_cast<unsigned char>(c);
+  return {digits[byte >> 4], digits[byte & 15]};
+}
+
 /// `text` with its control characters written \xNN: names come from the file, and a message
 /// must not drive the terminal it is printed on.
 std::string printable(const std::string& text) {
   std::string out;
   for (const char c : text) {
     const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 || byte == 0x7f) {
-      const char* hex = "0123456789abcdef";
-      out += {'\\', 'x', hex[byte >> 4], hex[byte & 15]};
-    } else {
-      out += c;
-    }
+    out += byte < 0x20 || byte == 0x7f ? "\\x" + hex(c) : std::string(1, c);
   }
   return out;
 }
@@ -92,11 +94,8 @@ void check_encoding(const std::string& xml, const std::string& source) {
     const char c = xml[i];
     const std::size_t length = c == '\0' ? 0 : utf8_length(xml, i);
     if (length == 0) {
-      const char* hex = "0123456789abcdef";
-      const auto byte = static_cast<unsigned char>(c);
-      fail(source, line, c == '\0' ? std::string("a NUL byte: a URDF is text")
-                                   : std::string("malformed UTF-8 at byte 0x") + hex[byte >> 4] + hex[byte & 15] +
-                                         " (a URDF is UTF-8 text)");
+      fail(source, line, c == '\0' ? "a NUL byte: a URDF is text"
+                                   : "malformed UTF-8 at byte 0x" + hex(c) + " (a URDF is UTF-8 text)");
     }
     if (c == '\n' || (c == '\r' && (i + 1 == xml.size() || xml[i + 1] != '\n'))) ++line;
     i += length;
