@@ -2,35 +2,116 @@
 
 #include <cstdlib>
 #include <exception>
+#include <sstream>
 
 #include <opspace/visuals.hpp>
 
 namespace cli {
 
+namespace {
+
+/// Prints "program: message" on stderr and returns 2, the exit code of a bad argument.
+int bad(const char* program, const std::string& message) {
+  std::cerr << program << ": " << message << "\n";
+  return 2;
+}
+
+}  // namespace
+
 int parse(int argc, char** argv, int first, const Program& program, Options& options) {
   for (int i = first; i < argc; ++i) {
     const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
     if (program.help && (arg == "--help" || arg == "-h")) {
       return program.usage(argv[0], 0);
     } else if (arg == "--no-plots") {
       options.plots = false;
     } else if (arg == "--no-replay") {
       options.replay = false;
-    } else if (arg == "--duration" && i + 1 < argc) {
+    } else if (arg == "--duration" && has_value) {
+      const std::string value = argv[++i];
       char* end = nullptr;
-      options.run.duration = std::strtod(argv[++i], &end);
-      if (*end != '\0' || !(options.run.duration > 0.0)) {
-        std::cerr << argv[0] << ": --duration needs a positive number of seconds\n";
-        return 2;
+      const double duration = std::strtod(value.c_str(), &end);
+      // strtod also reads "inf", "nan" and "1e999" (as inf): the bounds refuse them.
+      if (value.empty() || *end != '\0' || !(duration > 0.0 && duration <= kMaxDuration)) {
+        std::ostringstream s;
+        s << "--duration needs a number of seconds in (0, " << kMaxDuration << "], not '" << value << "'";
+        return bad(argv[0], s.str());
       }
-    } else if (program.csv && arg == "--csv" && i + 1 < argc) {
+      options.run.duration = duration;
+    } else if (program.csv && arg == "--csv" && has_value) {
       options.run.csv_path = argv[++i];
+      if (options.run.csv_path.empty()) return bad(argv[0], "--csv needs a file path, not ''");
+    } else if ((arg == "--duration" || (program.csv && arg == "--csv")) && !has_value) {
+      return bad(argv[0], arg + " needs a value after it");
     } else if (!program.extra || !program.extra(arg)) {
       std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
       return program.usage(argv[0], 2);
     }
   }
   return -1;
+}
+
+int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& command) {
+  using opspace::hw2::p1b::Part;
+  if (argc < 2) return usage(argv[0], 2);
+  const std::string part = argv[1];
+  if (part == "--help" || part == "-h") return usage(argv[0], 0);
+  command.comparing = part == "compare";
+  if (part == "1") {
+    command.part = Part::kTipPd;
+  } else if (part == "2" || command.comparing) {
+    command.part = Part::kPseudoInverseNullspace;
+  } else if (part == "3") {
+    command.part = Part::kDynamicallyConsistentNullspace;
+  } else {
+    std::cerr << argv[0] << ": unknown part '" << part << "'\n";
+    return usage(argv[0], 2);
+  }
+  Program program;
+  program.usage = usage;
+  program.help = false;  // only as the first argument
+  std::string misplaced;  // --no-joint-damping where it does not apply
+  program.extra = [&](const std::string& arg) {
+    if (arg != "--no-joint-damping") return false;
+    if (command.part == Part::kTipPd && !command.comparing) {
+      command.part = Part::kTipPdWithoutJointDamping;
+    } else if (command.part != Part::kTipPdWithoutJointDamping) {
+      misplaced = "--no-joint-damping applies to PART 1 only, not to '" + part + "'";
+    }
+    return true;
+  };
+  command.options.run.csv_path.clear();  // still empty after parse(): no --csv given
+  const int code = parse(argc, argv, 2, program, command.options);
+  if (code >= 0) return code;
+  if (!misplaced.empty()) return bad(argv[0], misplaced);
+  if (command.options.run.csv_path.empty()) {
+    command.options.run.csv_path =
+        command.comparing ? "out/hw2-p1-compare.csv"
+        : command.part == Part::kTipPdWithoutJointDamping ? "out/hw2-p1-part1-no-damping.csv"
+                                                           : "out/hw2-p1-part" + part + ".csv";
+  }
+  return -1;
+}
+
+int parse_p4(int argc, char** argv, int (*usage)(const char*, int), P4Command& command) {
+  using opspace::hw2::p4::Target;
+  Program program;
+  program.usage = usage;
+  program.csv = false;  // one log per run, named after the target
+  program.extra = [&](const std::string& arg) {
+    if (arg == "z") {
+      command.targets = {Target::kAlongZ0};
+    } else if (arg == "y") {
+      command.targets = {Target::kAlongY0};
+    } else if (arg == "all") {
+      command.targets = {Target::kAlongZ0, Target::kAlongY0};
+    } else {
+      return false;
+    }
+    return true;
+  };
+  return parse(argc, argv, 1, program, command.options);
 }
 
 void publish(const Options& options, const std::string& prefix,

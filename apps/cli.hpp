@@ -1,5 +1,7 @@
 // What the hw2-p1 .. hw2-p4 programs share: the options --duration, --csv, --no-plots and
-// --no-replay, the end of the run summary, the pictures after a run, and the error exit.
+// --no-replay (and the command lines of hw2-p1 and hw2-p4, which add their own), the end of
+// the run summary, the pictures after a run, and the error exit. tests/fuzz/fuzz_cli.cpp
+// fuzzes the parsing.
 #pragma once
 
 #include <functional>
@@ -8,11 +10,19 @@
 #include <string>
 #include <vector>
 
+#include <opspace/hw2/p1b.hpp>
+#include <opspace/hw2/p4.hpp>
 #include <opspace/plot.hpp>
 #include <opspace/replay.hpp>
 #include <opspace/scenarios/common.hpp>
 
 namespace cli {
+
+/// The longest run --duration accepts (simulated seconds): 30 times the longest default (20 s).
+/// A run records one sample per 1 ms step and reserves them all at its start: the limit keeps
+/// that allocation under 200 MB (problem 3's samples, 304 bytes, are the largest) instead of
+/// the size a number on the command line claims.
+inline constexpr double kMaxDuration = 600.0;
 
 /// What a program's command line sets.
 struct Options {
@@ -31,10 +41,33 @@ struct Program {
   std::function<bool(const std::string& arg)> extra;
 };
 
-/// Parses argv[first] .. argv[argc - 1] into `options`: --help, -h, --duration SECONDS,
-/// --csv PATH, --no-plots, --no-replay, then program.extra. Returns -1 when the program goes
-/// on, otherwise its exit code: 0 after --help, 2 after a bad argument (message on stderr).
+/// Parses argv[first] .. argv[argc - 1] into `options`: --help, -h, --duration SECONDS (in
+/// (0, kMaxDuration]), --csv PATH (not empty), --no-plots, --no-replay, then program.extra.
+/// Returns -1 when the program goes on, otherwise its exit code: 0 after --help, 2 after a bad
+/// argument (a message naming it on stderr).
 int parse(int argc, char** argv, int first, const Program& program, Options& options);
+
+/// hw2-p1's command line: PART first (1, 2, 3 or compare; --help and -h only there), then
+/// --no-joint-damping (PART 1 only) and parse()'s options but --help.
+struct P1Command {
+  opspace::hw2::p1b::Part part = opspace::hw2::p1b::Part::kTipPd;
+  bool comparing = false;  ///< PART "compare": PART2 and PART3, their drift overlaid
+  Options options;         ///< csv_path defaults to out/hw2-p1-part<PART>[-no-damping].csv
+};
+
+/// Parses hw2-p1's argv into `command` (usage: the program's); returns as parse() does.
+int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& command);
+
+/// hw2-p4's command line: z, y or all (the last one given counts) and parse()'s options but
+/// --csv (each run names its own log).
+struct P4Command {
+  std::vector<opspace::hw2::p4::Target> targets = {opspace::hw2::p4::Target::kAlongZ0,
+                                                   opspace::hw2::p4::Target::kAlongY0};
+  Options options;  ///< run.duration: set the default before parsing
+};
+
+/// Parses hw2-p4's argv into `command` (usage: the program's); returns as parse() does.
+int parse_p4(int argc, char** argv, int (*usage)(const char*, int), P4Command& command);
 
 /// Prints the lines every run summary ends with: peak torque, clamped steps, the log `csv`
 /// (unless empty) and why the run stopped early (unless it did not).

@@ -1,6 +1,5 @@
 // hw2-p1 PART [options]: problem 1b on the simulated PUMA 560 with the control law of
 // exercises/p1b.cpp (hw2-p1) or solutions/p1b.cpp (hw2-p1-sol).
-#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -26,7 +25,7 @@ int usage(const char* program, int code) {
       << "  2  PART2: move joint 2 in the null space, pseudo-inverse projector\n"
       << "  3  PART3: move joint 2 in the null space, dynamically consistent projector\n"
       << "  compare  run PART2 and PART3 and overlay their tip drift (out/hw2-p1-compare-drift.png)\n"
-      << "  --duration  simulated seconds (default 20)\n"
+      << "  --duration  simulated seconds (default 20, at most " << cli::kMaxDuration << ")\n"
       << "  --csv       log file (default out/hw2-p1-part<PART>.csv); the plots and the replay page\n"
       << "              are written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n";
@@ -66,31 +65,14 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) return usage(argv[0], 2);
-  if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) return usage(argv[0], 0);
-  const std::string part_arg = argv[1];
-  const bool comparing = part_arg == "compare";
-  if (part_arg != "1" && part_arg != "2" && part_arg != "3" && !comparing) {
-    std::cerr << argv[0] << ": unknown part '" << part_arg << "'\n";
-    return usage(argv[0], 2);
-  }
-  Part part = comparing ? Part::kPseudoInverseNullspace : static_cast<Part>(std::stoi(part_arg));
-  cli::Options options;
-  options.run.csv_path = comparing ? "out/hw2-p1-compare.csv" : "out/hw2-p1-part" + part_arg + ".csv";
-  cli::Program program;
-  program.usage = &usage;
-  program.help = false;  // only as the first argument
-  program.extra = [&](const std::string& arg) {
-    if (arg != "--no-joint-damping" || part != Part::kTipPd || comparing) return false;
-    part = Part::kTipPdWithoutJointDamping;
-    options.run.csv_path = "out/hw2-p1-part1-no-damping.csv";
-    return true;
-  };
-  const int code = cli::parse(argc, argv, 2, program, options);
+  cli::P1Command command;
+  const int code = cli::parse_p1(argc, argv, &usage, command);
   if (code >= 0) return code;
+  const Part part = command.part;
+  cli::Options& options = command.options;
   options.run.progress = &std::cerr;
   const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);
-  if (comparing) return cli::guarded(argv[0], [&] { return compare(options, prefix); });
+  if (command.comparing) return cli::guarded(argv[0], [&] { return compare(options, prefix); });
   std::cout << "problem 1b, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
   return cli::guarded(argv[0], [&] {
     const p1b::Result result = p1b::run(part, &opspace::hw2::p1b::control, options.run);

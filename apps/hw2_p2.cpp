@@ -19,7 +19,7 @@ int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
       << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay]\n"
       << "  link7 of the iiwa tracks x_d(t) and lambda_d(t) of problem 2\n"
-      << "  --duration  simulated seconds (default " << p2::kDefaultDuration << ")\n"
+      << "  --duration  simulated seconds (default " << p2::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
       << "  --csv       log file (default out/hw2-p2.csv); plots and the 3D replay page are\n"
       << "              written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay  skip those pictures\n";

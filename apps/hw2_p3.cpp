@@ -19,7 +19,7 @@ int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
       << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay]\n"
       << "  link7's tool pushes 10 N on the plane x = 0.05 and tracks y_d, z_d and the rotation about x\n"
-      << "  --duration  simulated seconds (default " << p3::kDefaultDuration << ")\n"
+      << "  --duration  simulated seconds (default " << p3::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
       << "  --csv       log file (default out/hw2-p3.csv); the plots (PNG, SVG) and the replay page\n"
       << "              (HTML) are written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n";

@@ -28,7 +28,7 @@ int usage(const char* program, int code) {
       << "  z    question v: move the tip 10 cm down along Z0 (elbow lock)\n"
       << "  y    question v: move the tip 10 cm along Y0 (overhead lock)\n"
       << "  all  both (default)\n"
-      << "  --duration  simulated seconds per run (default " << p4::kDuration << ")\n"
+      << "  --duration  simulated seconds per run (default " << p4::kDuration << ", at most " << cli::kMaxDuration << ")\n"
       << "Logs: out/hw2-p4-<z|y>.csv (your controller), out/hw2-p4-<z|y>-plain.csv; plots and a 3D\n"
       << "replay page out/hw2-p4-<z|y>-* next to them (docs/visuals.md)\n";
   return code;
@@ -107,31 +107,16 @@ void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<Target> targets = {Target::kAlongZ0, Target::kAlongY0};
-  cli::Options options;
-  options.run.duration = p4::kDuration;
-  cli::Program program;
-  program.usage = &usage;
-  program.csv = false;  // one log per run, named after the target
-  program.extra = [&](const std::string& arg) {
-    if (arg == "z") {
-      targets = {Target::kAlongZ0};
-    } else if (arg == "y") {
-      targets = {Target::kAlongY0};
-    } else if (arg == "all") {
-      targets = {Target::kAlongZ0, Target::kAlongY0};
-    } else {
-      return false;
-    }
-    return true;
-  };
-  const int code = cli::parse(argc, argv, 1, program, options);
+  cli::P4Command command;
+  command.options.run.duration = p4::kDuration;
+  const int code = cli::parse_p4(argc, argv, &usage, command);
   if (code >= 0) return code;
+  cli::Options& options = command.options;
   std::cout << "problem 4, 3R elbow arm (" << OPSPACE_GRADED_LIBRARY << ")\n";
   return cli::guarded(argv[0], [&] {
     questions_i_to_iv();
     bool ok = true;
-    for (Target target : targets) {
+    for (Target target : command.targets) {
       const std::string name = target == Target::kAlongZ0 ? "z" : "y";
       options.run.progress = &std::cerr;
       options.run.csv_path = "out/hw2-p4-" + name + ".csv";

@@ -1,9 +1,14 @@
-// URDF loading in two passes:
+// URDF loading in three passes:
+//  0. Scans of the text: it must be UTF-8 without NUL bytes (TinyXML reads past the end of
+//     a cut UTF-8 sequence), and the markup's nesting depth and attributes per element are
+//     bounded (TinyXML recurses once per level and compares each new attribute with the
+//     element's others: the call stack or quadratic time would pay for them).
 //  1. TinyXML (which urdfdom itself depends on) checks what urdfdom does not, or reports
 //     without a line number: well-formed XML, joint types, mimic joints, the tree shape
 //     (one parent per link, one root, no loop). It also records each link's and joint's line.
 //  2. urdfdom parses the checked text; the links are walked from the root into a Model,
-//     with mass and inertia checked on the way.
+//     with every number checked on the way (masses, inertias, limits, shape sizes, and the
+//     sums and products of finite numbers that overflow).
 // urdfdom's console_bridge messages are captured while it parses, so the user sees only our
 // UrdfError (console_bridge's handler is process-global: do not load URDFs from two threads).
 #include "opspace/urdf.hpp"
@@ -12,7 +17,9 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <console_bridge/console.h>
 #include <cstring>
 #include <fstream>
@@ -26,9 +33,125 @@ namespace opspace {
 
 namespace {
 
+/// The two hexadecimal digits of `c`'s byte.
+std::string hex(char c) {
+  const char* digits = "0123456789abcdef";
+  const auto byte = static_cast<unsigned char>(c);
+  return {digits[byte >> 4], digits[byte & 15]};
+}
+
+/// `text` with its control characters written \xNN: names come from the file, and a message
+/// must not drive the terminal it is printed on.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    out += byte < 0x20 || byte == 0x7f ? "\\x" + hex(c) : std::string(1, c);
+  }
+  return out;
+}
+
 /// "<source>:<line>: <cause>", or "<source>: <cause>" when the line is unknown (line <= 0).
 [[noreturn]] void fail(const std::string& source, int line, const std::string& cause) {
-  throw UrdfError(source + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + cause);
+  throw UrdfError(source + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + printable(cause));
+}
+
+/// Length of the well-formed UTF-8 character at xml[i] (Unicode, table 3-7: a lead byte, a
+/// second byte in a range the lead sets, then bytes in 0x80-0xbf); 0 if it is malformed.
+std::size_t utf8_length(const std::string& xml, std::size_t i) {
+  const auto at = [&](std::size_t k) -> unsigned { return k < xml.size() ? static_cast<unsigned char>(xml[k]) : 0u; };
+  const unsigned c = at(i);
+  if (c < 0x80) return 1;
+  std::size_t length = 0;
+  unsigned low = 0x80, high = 0xbf;
+  if (c >= 0xc2 && c <= 0xdf) {
+    length = 2;
+  } else if (c >= 0xe0 && c <= 0xef) {
+    length = 3;
+    low = c == 0xe0 ? 0xa0 : low;   // no overlong forms
+    high = c == 0xed ? 0x9f : high;  // no surrogates
+  } else if (c >= 0xf0 && c <= 0xf4) {
+    length = 4;
+    low = c == 0xf0 ? 0x90 : low;
+    high = c == 0xf4 ? 0x8f : high;  // nothing above U+10FFFF
+  } else {
+    return 0;
+  }
+  if (at(i + 1) < low || at(i + 1) > high) return 0;
+  for (std::size_t k = 2; k < length; ++k) {
+    if (at(i + k) < 0x80 || at(i + k) > 0xbf) return 0;
+  }
+  return length;
+}
+
+/// Pass 0, first: the text is UTF-8 (what both parsers read it as) without NUL bytes (where
+/// they would stop reading). TinyXML steps over a character by the length its first byte
+/// announces, so a sequence cut short by the end of the text made it read past the end (found
+/// by fuzz-urdf under AddressSanitizer).
+void check_encoding(const std::string& xml, const std::string& source) {
+  int line = 1;
+  for (std::size_t i = 0; i < xml.size();) {
+    const char c = xml[i];
+    const std::size_t length = c == '\0' ? 0 : utf8_length(xml, i);
+    if (length == 0) {
+      fail(source, line, c == '\0' ? "a NUL byte: a URDF is text"
+                                   : "malformed UTF-8 at byte 0x" + hex(c) + " (a URDF is UTF-8 text)");
+    }
+    if (c == '\n' || (c == '\r' && (i + 1 == xml.size() || xml[i + 1] != '\n'))) ++line;
+    i += length;
+  }
+}
+
+/// Pass 0's bounds: a URDF nests about 5 elements deep and gives one at most 6 attributes.
+constexpr int kMaxDepth = 100;
+constexpr int kMaxAttributes = 100;
+
+/// Pass 0: walks the tags (comments, CDATA sections, declarations skipped; quoted attribute
+/// values honoured) counting lines as TinyXML does ("\r\n", "\r" and "\n" end one), and
+/// refuses an element nested deeper than kMaxDepth or with more than kMaxAttributes.
+void check_markup(const std::string& xml, const std::string& source) {
+  const std::size_t n = xml.size();
+  std::size_t i = 0;
+  int line = 1, depth = 0;
+  const auto skip_to = [&](std::size_t end) {  // moves i to end (at most n), counting lines
+    end = std::min(end, n);
+    for (; i < end; ++i) {
+      if (xml[i] == '\n' || (xml[i] == '\r' && (i + 1 == n || xml[i + 1] != '\n'))) ++line;
+    }
+  };
+  const auto past = [&](const char* token, std::size_t from) {  // the end of the next `token`
+    const std::size_t at = xml.find(token, from);
+    return at == std::string::npos ? n : at + std::strlen(token);
+  };
+  while (i < n) {
+    skip_to(xml.find('<', i));
+    if (i >= n) break;
+    if (xml.compare(i, 4, "<!--") == 0) {
+      skip_to(past("-->", i + 4));
+    } else if (xml.compare(i, 9, "<![CDATA[") == 0) {
+      skip_to(past("]]>", i + 9));
+    } else if (i + 1 < n && (xml[i + 1] == '?' || xml[i + 1] == '!' || xml[i + 1] == '/')) {
+      if (xml[i + 1] == '/') depth = std::max(0, depth - 1);
+      skip_to(past(">", i + 1));
+    } else {  // a start tag, up to its '>' outside quotes
+      const int row = line;
+      int attributes = 0;
+      std::size_t k = i + 1;
+      for (; k < n && xml[k] != '>'; ++k) {
+        if (xml[k] == '"' || xml[k] == '\'') {
+          k = std::min(xml.find(xml[k], k + 1), n - 1);
+        } else if (xml[k] == '=' && ++attributes > kMaxAttributes) {
+          fail(source, row, "an element with more than " + std::to_string(kMaxAttributes) +
+                                " attributes (a URDF element has at most 6)");
+        }
+      }
+      if (k < n && xml[k - 1] != '/' && ++depth > kMaxDepth) {
+        fail(source, row, "elements nested more than " + std::to_string(kMaxDepth) +
+                              " deep (a URDF nests about 5)");
+      }
+      skip_to(k + 1);
+    }
+  }
 }
 
 /// Line of each link and joint element, from pass 1.
@@ -50,6 +173,7 @@ Lines check_structure(const std::string& xml, const std::string& source) {
   if (robot == nullptr || robot->ValueStr() != "robot") {
     fail(source, robot ? robot->Row() : 0, "the document element must be <robot>");
   }
+  if (attribute(robot, "name").empty()) fail(source, robot->Row(), "the <robot> has no name");
   Lines lines;
   for (const TiXmlElement* e = robot->FirstChildElement("link"); e; e = e->NextSiblingElement("link")) {
     const std::string name = attribute(e, "name");
@@ -132,6 +256,27 @@ Lines check_structure(const std::string& xml, const std::string& source) {
   return lines;
 }
 
+/// The line of the first joint or link that urdfdom's messages name ("Joint [j1] is of type
+/// REVOLUTE but...", "Could not parse inertial element for Link [arm]"); 0 if none is named.
+int line_named_in(const std::string& errors, const Lines& lines) {
+  std::string lower = errors;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::size_t first = std::string::npos;
+  int row = 0;
+  for (const auto& [word, table] : {std::pair{"joint [", &lines.joint}, std::pair{"link [", &lines.link}}) {
+    const std::size_t at = lower.find(word);
+    if (at >= first) continue;
+    const std::size_t begin = at + std::strlen(word), end = errors.find(']', begin);
+    if (end == std::string::npos) continue;
+    const auto it = table->find(errors.substr(begin, end - begin));
+    if (it != table->end()) {
+      first = at;
+      row = it->second;
+    }
+  }
+  return row;
+}
+
 /// Collects console_bridge messages (urdfdom's) instead of printing them.
 class CapturedLog : public console_bridge::OutputHandler {
  public:
@@ -167,32 +312,65 @@ Inertia combine(const Inertia& a, const Inertia& b) {
   return r;
 }
 
+bool finite(const Inertia& in) { return std::isfinite(in.mass) && in.com.allFinite() && in.inertia.allFinite(); }
+
 /// Builds the Model from urdfdom's tree, merging fixed-joint children into their parent body.
 class Builder {
  public:
   Builder(Model& model, const urdf::ModelInterface& tree, const Lines& lines)
       : model_(model), tree_(tree), lines_(lines) {}
 
-  /// Adds `link`, whose frame is X in body `body` (-1: the base), and everything below it.
+  /// Adds `root` and every link below it, depth first with each link's joints in file order
+  /// (the order of q). A stack, not recursion: a long chain of links must not exhaust the
+  /// call stack.
+  void add_tree(const urdf::Link& root) {
+    struct Item {
+      const urdf::Joint* joint;  // into `link`; null for the root
+      const urdf::Link* link;
+      int body;                  // the parent's body (-1: the base)
+      Eigen::Isometry3d X;       // the parent link's frame in that body
+    };
+    std::vector<Item> stack{{nullptr, &root, -1, Eigen::Isometry3d::Identity()}};
+    while (!stack.empty()) {
+      Item item = stack.back();
+      stack.pop_back();
+      if (item.joint) add_joint(*item.joint, *item.link, item.body, item.X);
+      add_link(*item.link, item.body, item.X);
+      std::vector<urdf::JointSharedPtr> joints = item.link->child_joints;
+      std::sort(joints.begin(), joints.end(), [&](const auto& a, const auto& b) {
+        return lines_.joint.at(a->name) > lines_.joint.at(b->name);  // the first on top
+      });
+      for (const auto& joint : joints) {
+        stack.push_back({joint.get(), tree_.getLink(joint->child_link_name).get(), item.body, item.X});
+      }
+    }
+  }
+
+ private:
+  /// Adds `link`, whose frame is X in body `body` (-1: the base): its frame, mass and shapes.
   void add_link(const urdf::Link& link, int body, const Eigen::Isometry3d& X) {
     model_.frames.push_back(Frame{link.name, body, X});
     Inertia& target = body < 0 ? model_.base_inertia : model_.bodies[body].inertia;
     target = combine(target, link_inertia(link, X));
+    if (!finite(target)) {
+      fail(model_.source, lines_.link.at(link.name),
+           "link '" + link.name + "' has mass properties that overflow (are not finite) once merged into its body");
+    }
     for (const auto& c : link.collision_array) add_shape(c->geometry, c->origin, link.name, body, X, model_.collisions);
     for (const auto& v : link.visual_array) add_shape(v->geometry, v->origin, link.name, body, X, model_.visuals);
-
-    std::vector<urdf::JointSharedPtr> joints = link.child_joints;  // in file order, for q's order
-    std::sort(joints.begin(), joints.end(), [&](const auto& a, const auto& b) {
-      return lines_.joint.at(a->name) < lines_.joint.at(b->name);
-    });
-    for (const auto& joint : joints) add_joint(*joint, *tree_.getLink(joint->child_link_name), body, X);
   }
 
- private:
-  void add_joint(const urdf::Joint& joint, const urdf::Link& child, int body, const Eigen::Isometry3d& X) {
+  /// For the link `child` of `joint`, whose parent link's frame is X in body `body`: a moving
+  /// joint adds a body (then the child's frame is the identity in it); a fixed one composes X.
+  void add_joint(const urdf::Joint& joint, const urdf::Link& child, int& body, Eigen::Isometry3d& X) {
+    const int row = lines_.joint.at(joint.name);
     const Eigen::Isometry3d Xj = X * to_isometry(joint.parent_to_joint_origin_transform);
+    if (!Xj.matrix().allFinite()) {
+      fail(model_.source, row, "joint '" + joint.name + "' has a placement that overflows (is not finite): "
+                               "its origin, or those of the fixed joints above it, are too large");
+    }
     if (joint.type == urdf::Joint::FIXED) {
-      add_link(child, body, Xj);
+      X = Xj;
       return;
     }
     Body b;
@@ -202,21 +380,40 @@ class Builder {
     b.parent = body;
     b.joint_placement = Xj;
     const Eigen::Vector3d axis(joint.axis.x, joint.axis.y, joint.axis.z);
-    if (axis.norm() < 1e-9) fail(model_.source, lines_.joint.at(joint.name), "joint '" + joint.name + "' has a zero axis");
-    b.axis = axis.normalized();
+    // Eigen's stable norm scales first: the squares of (0, 1e308, 0) overflow, and axis / inf
+    // would have been a zero axis (found by fuzz-urdf).
+    if (axis.stableNorm() < 1e-9) fail(model_.source, row, "joint '" + joint.name + "' has a zero axis");
+    b.axis = axis.stableNormalized();
     constexpr double kInf = std::numeric_limits<double>::infinity();
     b.lower = -kInf;
     b.upper = kInf;
     if (joint.limits) {
+      const urdf::JointLimits& limits = *joint.limits;
       if (joint.type != urdf::Joint::CONTINUOUS) {
-        b.lower = joint.limits->lower;
-        b.upper = joint.limits->upper;
+        if (!(limits.lower <= limits.upper)) {
+          fail(model_.source, row, "joint '" + joint.name + "' has its lower limit " + number(limits.lower) +
+                                       " above its upper limit " + number(limits.upper));
+        }
+        b.lower = limits.lower;
+        b.upper = limits.upper;
       }
-      b.effort = joint.limits->effort;
-      b.velocity = joint.limits->velocity;
+      // 0 is allowed: no effort limit (the simulation clamps only to a positive one).
+      if (!(limits.effort >= 0.0) || !(limits.velocity >= 0.0)) {
+        fail(model_.source, row, "joint '" + joint.name + "' has effort " + number(limits.effort) + " and velocity " +
+                                     number(limits.velocity) + "; both limits must be >= 0");
+      }
+      b.effort = limits.effort;
+      b.velocity = limits.velocity;
     }
     model_.bodies.push_back(b);
-    add_link(child, model_.dof() - 1, Eigen::Isometry3d::Identity());
+    body = model_.dof() - 1;
+    X = Eigen::Isometry3d::Identity();
+  }
+
+  static std::string number(double value) {
+    std::ostringstream s;
+    s << value;
+    return s.str();
   }
 
   /// The link's inertial, checked, re-expressed in the body frame (link frame = X in it):
@@ -248,16 +445,18 @@ class Builder {
     return r;
   }
 
-  static void add_shape(const urdf::GeometrySharedPtr& geometry, const urdf::Pose& origin,
-                        const std::string& link, int body, const Eigen::Isometry3d& X,
-                        std::vector<Shape>& out) {
+  /// A collision or visual shape of `link`: its sizes must be >= 0, its placement finite.
+  void add_shape(const urdf::GeometrySharedPtr& geometry, const urdf::Pose& origin, const std::string& link,
+                 int body, const Eigen::Isometry3d& X, std::vector<Shape>& out) const {
     if (!geometry) return;
     Shape s;
+    std::string what;
     switch (geometry->type) {
       case urdf::Geometry::BOX: {
         const auto& box = static_cast<const urdf::Box&>(*geometry);
         s.kind = Shape::Kind::kBox;
         s.box_size << box.dim.x, box.dim.y, box.dim.z;
+        what = "a box of size " + number(box.dim.x) + " " + number(box.dim.y) + " " + number(box.dim.z);
         break;
       }
       case urdf::Geometry::CYLINDER: {
@@ -265,17 +464,26 @@ class Builder {
         s.kind = Shape::Kind::kCylinder;
         s.radius = cylinder.radius;
         s.length = cylinder.length;
+        what = "a cylinder of radius " + number(s.radius) + " and length " + number(s.length);
         break;
       }
       case urdf::Geometry::SPHERE:
         s.kind = Shape::Kind::kSphere;
         s.radius = static_cast<const urdf::Sphere&>(*geometry).radius;
+        what = "a sphere of radius " + number(s.radius);
         break;
       default:
         return;  // meshes are not drawn nor collided with
     }
+    const int row = lines_.link.at(link);
+    if (!(s.box_size.minCoeff() >= 0.0 && s.radius >= 0.0 && s.length >= 0.0)) {
+      fail(model_.source, row, "link '" + link + "' has " + what + ": sizes must be >= 0");
+    }
     s.body = body;
     s.placement = X * to_isometry(origin);
+    if (!s.placement.matrix().allFinite()) {
+      fail(model_.source, row, "link '" + link + "' has " + what + " whose placement overflows (is not finite)");
+    }
     s.link = link;
     out.push_back(s);
   }
@@ -288,6 +496,8 @@ class Builder {
 }  // namespace
 
 Model parse_urdf(const std::string& xml, const std::string& source) {
+  check_encoding(xml, source);
+  check_markup(xml, source);
   const Lines lines = check_structure(xml, source);
   urdf::ModelInterfaceSharedPtr tree;
   std::string errors;
@@ -300,21 +510,32 @@ Model parse_urdf(const std::string& xml, const std::string& source) {
     }
     errors = log.errors;
   }
-  if (!tree) fail(source, 0, "urdfdom rejected the file: " + (errors.empty() ? "no reason given" : errors));
+  if (!tree) {
+    fail(source, line_named_in(errors, lines),
+         "urdfdom rejected the file: " + (errors.empty() ? "no reason given" : errors));
+  }
 
   Model model;
   model.name = tree->getName();
   model.source = source;
-  Builder(model, *tree, lines).add_link(*tree->getRoot(), -1, Eigen::Isometry3d::Identity());
+  Builder(model, *tree, lines).add_tree(*tree->getRoot());
   return model;
 }
 
 Model load_urdf(const std::string& path) {
-  std::ifstream file(path);
+  // The largest robots' URDF files are under 1 MB (meshes live in files of their own): the
+  // cap keeps a wrong path (/dev/zero, a FIFO, a log) from filling the memory.
+  constexpr std::size_t kMaxBytes = std::size_t{16} << 20;
+  std::ifstream file(path, std::ios::binary);
   if (!file) fail(path, 0, std::string("cannot open the file (") + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parse_urdf(text.str(), path);
+  std::string text;
+  char chunk[1 << 16];
+  while (file.read(chunk, sizeof chunk) || file.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(file.gcount()));
+    if (text.size() > kMaxBytes) fail(path, 0, "larger than 16 MB: not a URDF (meshes live in files of their own)");
+  }
+  if (file.bad()) fail(path, 0, std::string("cannot read the file (") + std::strerror(errno) + ")");
+  return parse_urdf(text, path);
 }
 
 std::string robot_path(const std::string& file_name) { return std::string(OPSPACE_ROBOTS_DIR) + "/" + file_name; }

@@ -1,0 +1,147 @@
+// The programs' command lines (apps/cli.cpp): what hw2-p1 .. hw2-p4 accept, and for what they
+// refuse, exit code 2 with a message that names the argument. The refusals of --duration and
+// --csv values and the hw2-p1 cases are regression tests for what fuzzing and its review
+// found (docs/fuzzing.md).
+#include <doctest/doctest.h>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace {
+
+/// What a parse returned and printed on stderr.
+struct Outcome {
+  int code = -1;
+  std::string err;
+};
+
+/// The programs' usage(), shortened to its first line.
+int usage(const char* program, int code) {
+  (code ? std::cerr : std::cout) << "usage: " << program << "\n";
+  return code;
+}
+
+/// Calls parse(argc, argv) on `args` (args[0]: the program) with std::cerr captured.
+template <class Parse>
+Outcome run(std::vector<std::string> args, Parse parse) {
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::ostringstream err;
+  std::streambuf* saved = std::cerr.rdbuf(err.rdbuf());
+  Outcome o;
+  o.code = parse(static_cast<int>(args.size()), argv.data());
+  std::cerr.rdbuf(saved);
+  o.err = err.str();
+  return o;
+}
+
+/// hw2-p2's parse (hw2-p3's is the same): defaults 10 s and out/hw2-p2.csv.
+Outcome p2(const std::vector<std::string>& args, cli::Options& options) {
+  options.run.duration = 10.0;
+  options.run.csv_path = "out/hw2-p2.csv";
+  cli::Program program;
+  program.usage = &usage;
+  return run(args, [&](int argc, char** argv) { return cli::parse(argc, argv, 1, program, options); });
+}
+
+Outcome p1(const std::vector<std::string>& args, cli::P1Command& command) {
+  return run(args, [&](int argc, char** argv) { return cli::parse_p1(argc, argv, &usage, command); });
+}
+
+}  // namespace
+
+TEST_CASE("--duration takes a number of seconds up to the limit and quotes any other value") {
+  cli::Options options;
+  CHECK(p2({"hw2-p2", "--duration", "2.5"}, options).code == -1);
+  CHECK(options.run.duration == 2.5);
+  // kMaxDuration itself is allowed: the interval is (0, kMaxDuration].
+  CHECK(p2({"hw2-p2", "--duration", "600"}, options).code == -1);
+  CHECK(options.run.duration == cli::kMaxDuration);
+  // strtod reads "inf", "nan" and "1e999" (as inf): accepted before, they made the run reserve
+  // its samples for lround(inf) steps. 600.5 asks for more than kMaxDuration = 600.
+  for (const char* value : {"0", "-1", "600.5", "1e7", "inf", "nan", "1e999", "4s", ""}) {
+    CAPTURE(value);
+    const Outcome o = p2({"hw2-p2", "--duration", value}, options);
+    CHECK(o.code == 2);
+    CHECK(o.err == "hw2-p2: --duration needs a number of seconds in (0, 600], not '" + std::string(value) + "'\n");
+  }
+}
+
+TEST_CASE("an option without its value, or an empty --csv, is named in the refusal") {
+  cli::Options options;
+  Outcome o = p2({"hw2-p2", "--no-plots", "--duration"}, options);
+  CHECK(o.code == 2);
+  CHECK(o.err == "hw2-p2: --duration needs a value after it\n");
+  o = p2({"hw2-p2", "--csv"}, options);
+  CHECK(o.code == 2);
+  CHECK(o.err == "hw2-p2: --csv needs a value after it\n");
+  o = p2({"hw2-p2", "--csv", ""}, options);
+  CHECK(o.code == 2);
+  CHECK(o.err == "hw2-p2: --csv needs a file path, not ''\n");
+  o = p2({"hw2-p2", "--fast"}, options);
+  CHECK(o.code == 2);
+  CHECK(o.err == "hw2-p2: unknown argument '--fast'\nusage: hw2-p2\n");
+}
+
+TEST_CASE("hw2-p1 names its log after the part unless --csv names it, in any order") {
+  using Part = opspace::hw2::p1b::Part;
+  struct Case {
+    std::vector<std::string> args;
+    Part part;
+    const char* csv;
+  };
+  // The defaults of hw2-p1's usage text; before, a --csv given before --no-joint-damping was
+  // replaced by the no-damping default.
+  const Case table[] = {
+      {{"hw2-p1", "1"}, Part::kTipPd, "out/hw2-p1-part1.csv"},
+      {{"hw2-p1", "3"}, Part::kDynamicallyConsistentNullspace, "out/hw2-p1-part3.csv"},
+      {{"hw2-p1", "compare"}, Part::kPseudoInverseNullspace, "out/hw2-p1-compare.csv"},
+      {{"hw2-p1", "1", "--no-joint-damping"}, Part::kTipPdWithoutJointDamping, "out/hw2-p1-part1-no-damping.csv"},
+      {{"hw2-p1", "1", "--csv", "run/a.csv", "--no-joint-damping"}, Part::kTipPdWithoutJointDamping, "run/a.csv"},
+      {{"hw2-p1", "1", "--no-joint-damping", "--csv", "run/a.csv"}, Part::kTipPdWithoutJointDamping, "run/a.csv"},
+  };
+  for (const Case& c : table) {
+    CAPTURE(c.args.size());
+    CAPTURE(c.csv);
+    cli::P1Command command;
+    CHECK(p1(c.args, command).code == -1);
+    CHECK(command.part == c.part);
+    CHECK(command.options.run.csv_path == c.csv);
+  }
+}
+
+TEST_CASE("hw2-p1 refuses --no-joint-damping outside PART 1, saying why") {
+  cli::P1Command command;
+  for (const char* part : {"2", "3", "compare"}) {
+    CAPTURE(part);
+    const Outcome o = p1({"hw2-p1", part, "--no-joint-damping"}, command);
+    CHECK(o.code == 2);
+    CHECK(o.err == "hw2-p1: --no-joint-damping applies to PART 1 only, not to '" + std::string(part) + "'\n");
+  }
+  Outcome o = p1({"hw2-p1", "4"}, command);
+  CHECK(o.code == 2);
+  CHECK(o.err == "hw2-p1: unknown part '4'\nusage: hw2-p1\n");
+  o = p1({"hw2-p1"}, command);
+  CHECK(o.code == 2);
+  CHECK(o.err == "usage: hw2-p1\n");
+}
+
+TEST_CASE("hw2-p4 runs z, y or both, the last choice counting, and takes no --csv") {
+  using Target = opspace::hw2::p4::Target;
+  const auto parse = [](std::vector<std::string> args, cli::P4Command& command) {
+    return run(std::move(args), [&](int argc, char** argv) { return cli::parse_p4(argc, argv, &usage, command); });
+  };
+  cli::P4Command command;
+  CHECK(parse({"hw2-p4"}, command).code == -1);
+  CHECK(command.targets == std::vector<Target>{Target::kAlongZ0, Target::kAlongY0});
+  CHECK(parse({"hw2-p4", "z", "y"}, command).code == -1);
+  CHECK(command.targets == std::vector<Target>{Target::kAlongY0});
+  const Outcome o = parse({"hw2-p4", "--csv", "a.csv"}, command);
+  CHECK(o.code == 2);
+  CHECK(o.err == "hw2-p4: unknown argument '--csv'\nusage: hw2-p4\n");
+}
