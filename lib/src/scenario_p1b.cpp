@@ -116,7 +116,7 @@ Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
   const std::string who = "your " + describe(part).substr(0, describe(part).find(':')) + " controller";
   const Eigen::Vector3d x_d = goal(0.0, initial_q()).x_d;
   Result result = run_closed_loop<Result>(
-      sim, "hw2-p1", csv_columns(), options,
+      sim, "hw2-p1", "problem 1b, " + describe(part), csv_columns(), options,
       [&](double t) {
         const hw2::p1b::State& state = observer.observe(t, sim.q(), sim.qdot());
         const hw2::p1b::Goal g = goal(t, state.q);
