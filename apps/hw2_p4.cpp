@@ -79,18 +79,18 @@ void questions_i_to_iv() {
   cli::Verdict table("reference", "your answer", "");
   table.section("");
   const int dof = hw::degrees_of_freedom(k);
-  table.row("i.   tip degrees of freedom", std::to_string(dof), "", std::to_string(reference::p4_degrees_of_freedom()),
+  table.row("i. tip degrees of freedom", std::to_string(dof), "", std::to_string(reference::p4_degrees_of_freedom()),
             dof == reference::p4_degrees_of_freedom() ? "ok" : "DIFFERS");
   const auto answer = [&](const std::string& what, const hw::Directions& mine, const hw::Directions& ref) {
     table.row(what, directions(mine), "", directions(ref), same_span(mine, ref));
   };
-  answer("ii.  singular directions", hw::singular_directions(k), reference::p4_singular_directions());
+  answer("ii. singular directions", hw::singular_directions(k), reference::p4_singular_directions());
   answer("iii. moving directions", hw::moving_directions(k), reference::p4_moving_directions());
-  answer("     rotation axes", hw::rotation_axes(k), reference::p4_rotation_axes());
+  answer("iii. rotation axes", hw::rotation_axes(k), reference::p4_rotation_axes());
   const char* axes[] = {"X0", "Y0", "Z0"};
   for (int axis : {2, 1, 0}) {
     const opspace::SingularityType mine = hw::singularity_type(k, Eigen::Vector3d::Unit(axis));
-    table.row(std::string(axis == 2 ? "iv.  " : "     ") + axes[axis] + " is", type_name(mine), "",
+    table.row(std::string("iv. ") + axes[axis] + " is", type_name(mine), "",
               type_name(reference::p4_type(axis)), mine == reference::p4_type(axis) ? "ok" : "DIFFERS");
   }
   table.note("directions agree when they span the same subspace: signs and bases may differ");

@@ -3,6 +3,7 @@
 // progress is left alone. The hanging run is a child process (it ends with _Exit).
 #include <doctest/doctest.h>
 
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -50,19 +51,27 @@ Child run_in_child(Body body, double limit) {
   }
   close(pipe_fd[1]);
   Child child;
-  char buffer[4096];
-  for (ssize_t n; (n = read(pipe_fd[0], buffer, sizeof buffer)) > 0;) child.stderr_.append(buffer, static_cast<std::size_t>(n));
-  close(pipe_fd[0]);
   const auto start = std::chrono::steady_clock::now();
-  while (waitpid(pid, &child.status, WNOHANG) == 0) {
+  bool open = true, running = true;
+  while (open || running) {
     if (std::chrono::steady_clock::now() - start > std::chrono::duration<double>(limit)) {
       kill(pid, SIGKILL);
       waitpid(pid, nullptr, 0);
       child.status = -1;
       break;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    pollfd fd{pipe_fd[0], POLLIN, 0};
+    if (open && poll(&fd, 1, 20) > 0) {
+      char buffer[4096];
+      const ssize_t n = read(pipe_fd[0], buffer, sizeof buffer);
+      if (n > 0) child.stderr_.append(buffer, static_cast<std::size_t>(n));
+      if (n <= 0) open = false;
+    } else if (!open) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    if (running && waitpid(pid, &child.status, WNOHANG) == pid) running = false;
   }
+  close(pipe_fd[0]);
   return child;
 }
 
@@ -73,8 +82,7 @@ TEST_CASE("a controller that never returns is stopped by the watchdog, which nam
   options.duration = 1.0;
   options.watchdog = 0.5;
   const auto start = std::chrono::steady_clock::now();
-  // The child writes its stderr into the pipe; read() returns at its exit. 60 s only guards the
-  // suite against a watchdog that never fires.
+  // 60 s only guards the suite against a watchdog that never fires.
   const Child child = run_in_child(
       [&] { p1b::run(hw2::p1b::Part::kDynamicallyConsistentNullspace, &hangs_after_50_ms, options); }, 60.0);
   const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -91,12 +99,12 @@ TEST_CASE("a controller that never returns is stopped by the watchdog, which nam
 
 TEST_CASE("a run that makes progress reaches its end under a watchdog far shorter than the run") {
   scenarios::RunOptions options;
-  options.duration = 1.0;   // 1000 steps: a few tenths of a second of wall time,
-  options.watchdog = 0.25;  // each step far under 0.25 s
+  options.duration = 8.0;  // 8000 steps: about 0.8 s of wall time in a release build, longer
+  options.watchdog = 0.5;  // than the watchdog's limit, but each step takes a tenth of a ms
   const Child child = run_in_child(
       [&] {
         const p1b::Result r = p1b::run(hw2::p1b::Part::kTipPd, &gravity, options);
-        _exit(r.failure.empty() && r.samples.size() == 1001 ? 0 : 3);
+        _exit(r.failure.empty() && r.samples.size() == 8001 ? 0 : 3);
       },
       60.0);
   INFO("stderr of the run: " << child.stderr_);
