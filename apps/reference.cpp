@@ -320,8 +320,9 @@ std::string p1b_fragment(const Runs& runs) {
   }
   const auto [speed, joint] = largest_speed(runs.p1b.at(Part::kPseudoInverseNullspace));
   out << "\nPART2's fastest joint, joint " << joint + 1 << ", reaches " << approx(speed, {"rad/s", 1.0})
-      << " (1 ms differences of q). PART2 is chaotic: \"~\" marks values that round-off changes by\n"
-         "percents (the last bit of one starting angle moves its tip error by 5 %).\n";
+      << " (1 ms differences of q).\n"
+         "PART2 is chaotic: \"~\" marks values that round-off changes by percents (the last bit of\n"
+         "one starting angle moves its tip error by 5 %).\n";
   return out.str();
 }
 
@@ -431,6 +432,34 @@ std::string p4_fragment(const Runs& runs) {
   return out.str();
 }
 
+/// The fragment with its prose lines (not the tables' rows) wrapped at 96 columns, as the docs.
+std::string wrap_prose(const std::string& text) {
+  std::istringstream in(text);
+  std::ostringstream out;
+  for (std::string line; std::getline(in, line);) {
+    // Not inside "t = 0.001 s" or "14.5 N": never before "=", a unit or after "=".
+    const auto breakable = [&](std::size_t at) {
+      const std::size_t next_end = line.find(' ', at + 1);
+      const std::string next = line.substr(at + 1, next_end == std::string::npos ? std::string::npos : next_end - at - 1);
+      const std::string before = line.substr(line.rfind(' ', at - 1) + 1, at - line.rfind(' ', at - 1) - 1);
+      for (const char* unit : {"=", "N", "s", "mm", "deg", "rad", "rad/s", "N m", "m"}) {
+        if (next.rfind(unit, 0) == 0 && (next.size() == std::string(unit).size() || !std::isalpha(static_cast<unsigned char>(next[std::string(unit).size()]))))
+          return false;
+      }
+      return before != "=";
+    };
+    while (line.size() > 96 && line[0] != '|') {
+      std::size_t cut = line.rfind(' ', 96);
+      while (cut != std::string::npos && cut > 0 && !breakable(cut)) cut = line.rfind(' ', cut - 1);
+      if (cut == std::string::npos || cut == 0) break;
+      out << line.substr(0, cut) << "\n";
+      line = line.substr(cut + 1);
+    }
+    out << line << "\n";
+  }
+  return out.str();
+}
+
 std::string marker(const std::string& name) {
   return "<!-- generated: " + name + " (hw2-reference; cmake --build build/release --target refresh-docs) -->";
 }
@@ -444,7 +473,7 @@ void write_fragments(const Runs& runs, const std::string& path) {
       {"p3-reference", p3_fragment(runs)},
       {"p4-reference", p4_fragment(runs)},
   };
-  for (const auto& [name, text] : fragments) file << marker(name) << "\n" << text << end_marker(name) << "\n";
+  for (const auto& [name, text] : fragments) file << marker(name) << "\n" << wrap_prose(text) << end_marker(name) << "\n";
   if (!file) throw std::runtime_error("cannot write " + path);
 }
 
@@ -520,12 +549,22 @@ bool docs_line_matches(const std::string& docs_line, const std::string& fresh_li
   return true;
 }
 
-bool docs_match(const std::vector<std::string>& docs_lines, const std::vector<std::string>& fresh) {
-  if (docs_lines.size() != fresh.size()) return false;
-  for (std::size_t i = 0; i < fresh.size(); ++i) {
-    if (!docs_line_matches(docs_lines[i], fresh[i])) return false;
+/// The lines as one text, every run of white space one space: where a paragraph wraps does
+/// not matter (a number one digit longer moves the break).
+std::string joined(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) {
+    for (char c : line + "\n") {
+      const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
+      if (!space) text += c;
+      else if (!text.empty() && text.back() != ' ') text += ' ';
+    }
   }
-  return true;
+  return text;
+}
+
+bool docs_match(const std::vector<std::string>& docs_lines, const std::vector<std::string>& fresh) {
+  return docs_line_matches(joined(docs_lines), joined(fresh));
 }
 
 int docs(bool write, const std::string& dir, const std::string& fragments_path) {

@@ -106,8 +106,8 @@ Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
   const Model puma = load_urdf(robot_path(kRobotFile));
   Observer observer(puma);
   // PART2's law spins the light wrist (its links weigh 0.1-0.8 kg and the model, like Bullet,
-  // has no motor inertia) to ~200 rad/s: that wild motion is the lesson, so the run must not
-  // stop below kMaxJointSpeed.
+  // has no motor inertia) to a few hundred rad/s: that wild motion is the lesson, so the run
+  // must not stop below kMaxJointSpeed.
   SimulationSettings settings;
   settings.max_joint_speed = kMaxJointSpeed;
   Simulation sim(puma, settings);

@@ -22,8 +22,8 @@ using hw2::p1b::Vector6d;
 inline constexpr const char* kRobotFile = "puma.urdf";
 inline constexpr const char* kTipLink = "end-effector";
 inline constexpr double kSettleTime = 2.0;  ///< errors are measured after this (s)
-/// Speed bound of the run (rad/s): high enough that PART2's wild wrist motion (~200 rad/s)
-/// is shown rather than stopped (docs/problem1b.md).
+/// Speed bound of the run (rad/s): high enough that PART2's wild wrist motion (a few hundred
+/// rad/s) is shown rather than stopped (docs/problem1b.md).
 inline constexpr double kMaxJointSpeed = 1000.0;
 /// Simulated seconds of the graded runs and of hw2-p1's default run: one period of q_d(t).
 inline constexpr double kDefaultDuration = 10.0;
