@@ -135,10 +135,13 @@ void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain
   table.print(std::cout, "bash scripts/grade --problem 4 says which test and why");
   const p4::Summary& p = plain.summary;
   std::cout << "the plain controller from the same start (the library's, not yours): reached " << reach(p)
-            << ",\n  final error " << cli::show(p.final_error, cli::kMm) << ", peak torque "
+            << ", final error " << cli::show(p.final_error, cli::kMm) << ",\n  peak torque "
             << cli::show(p.peak_torque, cli::kNewtonMetre) << cli::joint(p.peak_torque_joint) << ", "
             << cli::show(static_cast<double>(p.clamped_steps), cli::kJointSteps) << " clamped, final q "
-            << final_q(plain) << " deg\n";
+            << final_q(plain) << " deg\n  expected: without the self-motion potential "
+            << (target == Target::kAlongZ0 ? "it needs torques beyond the limits"
+                                           : "the arm's plane never turns toward Y0")
+            << " (the grader checks that contrast)\n";
   if (!mine.failure.empty()) std::cout << "  your run stopped early: " << mine.failure << "\n";
   if (!plain.failure.empty()) std::cout << "  the plain run stopped early: " << plain.failure << "\n";
 }
