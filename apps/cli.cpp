@@ -1,9 +1,13 @@
 #include "cli.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <sstream>
+#include <filesystem>
 
+#include <opspace/scenarios/watchdog.hpp>
 #include <opspace/visuals.hpp>
 
 namespace cli {
@@ -87,9 +91,9 @@ int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& c
   if (!misplaced.empty()) return bad(argv[0], misplaced);
   if (command.options.run.csv_path.empty()) {
     command.options.run.csv_path =
-        command.comparing ? "out/hw2-p1-compare.csv"
-        : command.part == Part::kTipPdWithoutJointDamping ? "out/hw2-p1-part1-no-damping.csv"
-                                                           : "out/hw2-p1-part" + part + ".csv";
+        output_path(command.comparing ? "hw2-p1-compare.csv"
+                    : command.part == Part::kTipPdWithoutJointDamping ? "hw2-p1-part1-no-damping.csv"
+                                                                       : "hw2-p1-part" + part + ".csv");
   }
   return -1;
 }
@@ -124,6 +128,41 @@ void publish(const Options& options, const std::string& prefix,
     opspace::visuals::publish(drawn, &replay, prefix, std::cout);
   } else {
     opspace::visuals::publish(drawn, nullptr, prefix, std::cout);
+  }
+}
+
+std::string reference_heading(double duration) { return "reference (" + show(duration, kSeconds) + ")"; }
+
+void print_summary_start(double time_reached, double duration, double reference_duration) {
+  std::cout << std::fixed << std::setprecision(2) << "\nsimulated " << time_reached << " s of "
+            << show(duration, kSeconds) << "\n";
+  if (std::abs(duration - reference_duration) > 1e-9) {
+    std::cout << "note: the grader and the reference run " << show(reference_duration, kSeconds)
+              << "; over " << show(duration, kSeconds) << " the comparison below is only indicative\n";
+  }
+}
+
+std::string output_path(const std::string& name) {
+  namespace fs = std::filesystem;
+  const char* override_dir = std::getenv("OPSPACE_OUT");
+  const fs::path dir = override_dir && *override_dir ? fs::path(override_dir) : fs::path(OPSPACE_OUT_DIR);
+  std::error_code ec;
+  const fs::path out = fs::weakly_canonical(fs::absolute(dir, ec), ec);
+  const fs::path here = fs::weakly_canonical(fs::current_path(ec), ec);
+  if (ec) return (dir / name).string();
+  // Below the current directory (run from the repository's root): the short relative path.
+  const auto [o, h] = std::mismatch(out.begin(), out.end(), here.begin(), here.end());
+  if (h == here.end()) return (out.lexically_relative(here) / name).string();
+  return (out / name).string();
+}
+
+bool watchdog_from_environment(const char* program, Options& options) {
+  try {
+    options.run.watchdog = opspace::scenarios::watchdog_seconds_from_environment();
+    return true;
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n";
+    return false;
   }
 }
 

@@ -16,6 +16,8 @@
 #include <opspace/replay.hpp>
 #include <opspace/scenarios/common.hpp>
 
+#include "verdict.hpp"
+
 namespace cli {
 
 /// The longest run --duration accepts (simulated seconds): 30 times the longest default (20 s).
@@ -69,13 +71,29 @@ struct P4Command {
 /// Parses hw2-p4's argv into `command` (usage: the program's); returns as parse() does.
 int parse_p4(int argc, char** argv, int (*usage)(const char*, int), P4Command& command);
 
-/// Prints the lines every run summary ends with: peak torque, clamped steps, the log `csv`
-/// (unless empty) and why the run stopped early (unless it did not).
+
+/// Adds the rows every run summary ends with to `table`: peak torque and clamped steps of the
+/// run `s` beside those of the reference run `ref` (the grader bounds neither, except in
+/// problem 4, which adds its own row).
+template <class Summary>
+void add_torque_rows(Verdict& table, const Summary& s, const Summary& ref) {
+  table.row("peak joint torque", show(s.peak_torque, kNewtonMetre) + joint(s.peak_torque_joint), "not graded",
+            show(ref.peak_torque, kNewtonMetre) + joint(ref.peak_torque_joint));
+  table.shown("torques clamped to limits", static_cast<double>(s.clamped_steps),
+              static_cast<double>(ref.clamped_steps), kJointSteps);
+}
+
+/// "reference (10 s)": the heading of the reference column for runs of `duration` seconds.
+std::string reference_heading(double duration);
+
+/// Prints the lines before a run's table: how far it got ("simulated 10.00 s of 10 s") and,
+/// when its duration differs from the reference run's, that the comparison is only indicative.
+void print_summary_start(double time_reached, double duration, double reference_duration);
+
+/// Prints the lines every run summary ends with: the log `csv` (unless empty) and why the run
+/// stopped early (unless it did not).
 template <class Result>
 void print_summary_end(const Result& r, const std::string& csv) {
-  std::cout << std::setprecision(1) << "peak joint torque:        " << r.summary.peak_torque << " N m (joint "
-            << r.summary.peak_torque_joint + 1 << ")\n"
-            << "torques clamped to limits: " << r.summary.clamped_steps << " joint-steps\n";
   if (!csv.empty()) std::cout << "log: " << csv << "\n";
   if (!r.failure.empty()) std::cout << "the run stopped early: " << r.failure << "\n";
 }
@@ -103,5 +121,15 @@ int finish(const Options& options, const std::string& prefix, const Result& resu
 
 /// Returns body(); an exception instead prints "program: what" on stderr and returns 1.
 int guarded(const char* program, const std::function<int()>& body);
+
+/// The default path of the output `name` (e.g. "hw2-p3.csv"): in the repository's out/ (or in
+/// $OPSPACE_OUT if set), wherever the program runs from. Relative when out/ lies below the
+/// current directory ("out/hw2-p3.csv" from the repository's root), absolute otherwise.
+std::string output_path(const std::string& name);
+
+/// Sets options.run.watchdog from OPSPACE_WATCHDOG (scripts/run sets it: a run whose step
+/// takes longer is stopped, scenarios/watchdog.hpp). Returns false after printing
+/// "program: ..." on stderr if the variable is not a number of seconds.
+bool watchdog_from_environment(const char* program, Options& options);
 
 }  // namespace cli

@@ -2,6 +2,7 @@
 // functions of exercises/p3.cpp (hw2-p3) or solutions/p3.cpp (hw2-p3-sol).
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include <opspace/hw2/p3.hpp>
@@ -10,6 +11,7 @@
 #include <opspace/visuals.hpp>
 
 #include "cli.hpp"
+#include "reference_runs.hpp"
 
 namespace {
 
@@ -20,34 +22,58 @@ int usage(const char* program, int code) {
       << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay]\n"
       << "  link7's tool pushes 10 N on the plane x = 0.05 and tracks y_d, z_d and the rotation about x\n"
       << "  --duration  simulated seconds (default " << p3::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
-      << "  --csv       log file (default out/hw2-p3.csv); the plots (PNG, SVG) and the replay page\n"
+      << "  --csv       log file (default out/hw2-p3.csv in the repository); the plots (PNG, SVG) and the replay page\n"
       << "              (HTML) are written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n";
   return code;
 }
 
-void print_summary(const p3::Result& r, const std::string& csv) {
+std::string fixed(double v, int decimals, const char* unit) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(decimals) << v << unit;
+  return s.str();
+}
+
+std::string contact_time(const p3::Summary& s) {
+  return s.first_contact_time < 0 ? "never" : "t = " + fixed(s.first_contact_time, 3, " s");
+}
+
+std::string x_range(const p3::Summary& s) {
+  return fixed(1e3 * s.x_min, 3, "") + " to " + fixed(1e3 * s.x_max, 3, " mm");
+}
+
+/// The run's results beside the grader's bounds and the reference run.
+void print_summary(const p3::Result& r, double duration, const std::string& csv) {
   const p3::Summary& s = r.summary;
-  constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
-  std::cout << std::fixed << std::setprecision(2) << "\nsimulated " << s.time_reached << " s\n";
-  if (s.first_contact_time < 0) {
-    std::cout << "the tool never touched the plane\n";
-  } else {
-    std::cout << std::setprecision(3) << "first contact at t = " << s.first_contact_time << " s\n";
-  }
-  std::cout << std::setprecision(3) << "after " << p3::kSettleTime << " s:\n"
-            << "  contact force F_x:           mean " << s.force_mean << " N (desired " << p3::kPushForce << " N)\n"
-            << "  force error |F_x - 10|:      mean " << s.force_error_mean << " N, peak " << s.force_error_max
-            << " N (peak of the 10 ms average " << s.force_error_max_10ms << " N)\n"
-            << "  steps without contact:       " << s.contact_lost_samples << "\n"
-            << "  contact moment |(M_y, M_z)| about link7's origin: max " << s.moment_yz_max << " N m\n"
-            << "  y, z tracking error:         max " << 1e3 * s.yz_error_max << " mm, RMS " << 1e3 * s.yz_error_rms
-            << " mm\n"
-            << "  rotation-about-x error:      max " << kDegPerRad * s.rotation_x_error_max << " deg, RMS "
-            << kDegPerRad * s.rotation_x_error_rms << " deg\n"
-            << "  tool tilt against the plane: max " << kDegPerRad * s.tilt_max << " deg, RMS "
-            << kDegPerRad * s.tilt_rms << " deg\n"
-            << "  link7's origin along x:      " << 1e3 * s.x_min << " to " << 1e3 * s.x_max << " mm\n";
+  const p3::Summary ref = reference::p3();
+  cli::print_summary_start(s.time_reached, duration, reference::kP3Duration);
+  cli::Verdict table(cli::reference_heading(reference::kP3Duration));
+  table.section("contact");
+  table.row("first push on the plane", contact_time(s), "graded: must touch", contact_time(ref),
+            s.first_contact_time >= 0 ? "ok" : "MISSES");
+  table.section("after " + cli::show(p3::kSettleTime, cli::kSeconds));
+  table.at_most("mean |F_x - 10 N|", s.force_error_mean, p3::kForceErrorMeanMax, ref.force_error_mean,
+                cli::kNewton);
+  table.shown("mean F_x", s.force_mean, ref.force_mean, cli::kNewton);
+  table.shown("peak |F_x - 10 N|, one step", s.force_error_max, ref.force_error_max, cli::kNewton);
+  table.shown("peak |F_x - 10 N|, 10 ms mean", s.force_error_max_10ms, ref.force_error_max_10ms, cli::kNewton);
+  table.note("single steps scatter: the solver shares the push unevenly among the disc's contact points");
+  table.at_most("steps without contact", static_cast<double>(s.contact_lost_samples),
+                static_cast<double>(p3::kContactLostSamplesMax), static_cast<double>(ref.contact_lost_samples),
+                cli::kSteps);
+  table.shown("moment |(M_y, M_z)|, max", s.moment_yz_max, ref.moment_yz_max, cli::kNewtonMetre);
+  table.at_most("y, z tracking error, RMS", s.yz_error_rms, p3::kYzErrorRmsMax, ref.yz_error_rms, cli::kMm);
+  table.shown("y, z tracking error, max", s.yz_error_max, ref.yz_error_max, cli::kMm);
+  table.at_most("rotation-about-x error, RMS", s.rotation_x_error_rms, p3::kRotationXErrorRmsMax,
+                ref.rotation_x_error_rms, cli::kDegrees);
+  table.shown("rotation-about-x error, max", s.rotation_x_error_max, ref.rotation_x_error_max, cli::kDegrees);
+  table.at_most("tool tilt, max", s.tilt_max, p3::kTiltMax, ref.tilt_max, cli::kDegrees);
+  table.shown("tool tilt, RMS", s.tilt_rms, ref.tilt_rms, cli::kDegrees);
+  table.row("link7's origin along x", x_range(s), "not graded", x_range(ref));
+  table.note("0 puts the tool face on the plane x = 0.05");
+  table.section("over the whole run");
+  cli::add_torque_rows(table, s, ref);
+  table.print(std::cout, "bash scripts/grade --problem 3 says which test and why");
   cli::print_summary_end(r, csv);
 }
 
@@ -56,17 +82,18 @@ void print_summary(const p3::Result& r, const std::string& csv) {
 int main(int argc, char** argv) {
   cli::Options options;
   options.run.duration = p3::kDefaultDuration;
-  options.run.csv_path = "out/hw2-p3.csv";
+  options.run.csv_path = cli::output_path("hw2-p3.csv");
   cli::Program program;
   program.usage = &usage;
   const int code = cli::parse(argc, argv, 1, program, options);
   if (code >= 0) return code;
+  if (!cli::watchdog_from_environment(argv[0], options)) return 2;
   options.run.progress = &std::cerr;
   std::cout << "problem 3, iiwa unified motion and force control against a plane (" << OPSPACE_GRADED_LIBRARY
             << ")\n";
   return cli::guarded(argv[0], [&] {
     const p3::Result result = p3::run(&opspace::hw2::p3::control, options.run);
-    print_summary(result, options.run.csv_path);
+    print_summary(result, options.run.duration, options.run.csv_path);
     return cli::finish(
         options, opspace::visuals::prefix_of(options.run.csv_path), result, [&] { return p3::figures(result); },
         [&] { return p3::replay_scene(result); });

@@ -2,6 +2,7 @@
 // exercises/p4.cpp (hw2-p4) or solutions/p4.cpp (hw2-p4-sol) to questions i-iv at
 // theta = (0, 90 deg, 0), then runs question v's controller and the plain operational-space
 // controller from the same start, side by side.
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -11,10 +12,12 @@
 #include <opspace/hw2/p4.hpp>
 #include <opspace/scenarios.hpp>
 #include <opspace/scenarios/p4_visuals.hpp>
+#include <opspace/scenarios/watchdog.hpp>
 #include <opspace/visuals.hpp>
 #include <opspace/urdf.hpp>
 
 #include "cli.hpp"
+#include "reference_runs.hpp"
 
 namespace {
 
@@ -29,8 +32,8 @@ int usage(const char* program, int code) {
       << "  y    question v: move the tip 10 cm along Y0 (overhead lock)\n"
       << "  all  both (default)\n"
       << "  --duration  simulated seconds per run (default " << p4::kDuration << ", at most " << cli::kMaxDuration << ")\n"
-      << "Logs: out/hw2-p4-<z|y>.csv (your controller), out/hw2-p4-<z|y>-plain.csv; plots and a 3D\n"
-      << "replay page out/hw2-p4-<z|y>-* next to them (docs/visuals.md)\n";
+      << "Logs: out/hw2-p4-<z|y>.csv (your controller), out/hw2-p4-<z|y>-plain.csv in the repository;\n"
+      << "plots and a 3D replay page out/hw2-p4-<z|y>-* next to them (docs/visuals.md)\n";
   return code;
 }
 
@@ -56,18 +59,42 @@ const char* type_name(opspace::SingularityType t) {
   return "?";
 }
 
+Eigen::Matrix3d projector(const hw::Directions& d) {
+  if (d.count < 0 || d.count > 3) return Eigen::Matrix3d::Constant(std::nan(""));
+  return d.u.leftCols(d.count) * d.u.leftCols(d.count).transpose();
+}
+
+/// "ok" when the two sets of directions span the same subspace (u u^T does not depend on the
+/// signs or the basis; 1e-6 is far above the SVDs' round-off, far below a wrong direction).
+const char* same_span(const hw::Directions& a, const hw::Directions& b) {
+  return a.count == b.count && (projector(a) - projector(b)).cwiseAbs().maxCoeff() < 1e-6 ? "ok" : "DIFFERS";
+}
+
+/// Questions i-iv at the singular configuration, each answer beside the reference's.
 void questions_i_to_iv() {
   const opspace::Model rrr = opspace::load_urdf(opspace::robot_path(p4::kRobotFile));
   opspace::Data data(rrr);
   const hw::Kinematics k = p4::kinematics(rrr, data, p4::singular_q());
-  std::cout << "questions i-iv at theta = (0, 90 deg, 0), tip at " << vec(k.x) << " m\n"
-            << "  i.   tip degrees of freedom: " << hw::degrees_of_freedom(k) << "\n"
-            << "  ii.  singular directions:    " << directions(hw::singular_directions(k)) << "\n"
-            << "  iii. moving directions:      " << directions(hw::moving_directions(k)) << "\n"
-            << "       rotation axes:          " << directions(hw::rotation_axes(k)) << "\n"
-            << "  iv.  Z0 is " << type_name(hw::singularity_type(k, Eigen::Vector3d::UnitZ()))
-            << ", Y0 is " << type_name(hw::singularity_type(k, Eigen::Vector3d::UnitY()))
-            << ", X0 is " << type_name(hw::singularity_type(k, Eigen::Vector3d::UnitX())) << "\n";
+  std::cout << "questions i-iv at theta = (0, 90 deg, 0), tip at " << vec(k.x) << " m\n";
+  cli::Verdict table("reference", "your answer", "");
+  table.section("");
+  const int dof = hw::degrees_of_freedom(k);
+  table.row("i. tip degrees of freedom", std::to_string(dof), "", std::to_string(reference::p4_degrees_of_freedom()),
+            dof == reference::p4_degrees_of_freedom() ? "ok" : "DIFFERS");
+  const auto answer = [&](const std::string& what, const hw::Directions& mine, const hw::Directions& ref) {
+    table.row(what, directions(mine), "", directions(ref), same_span(mine, ref));
+  };
+  answer("ii. singular directions", hw::singular_directions(k), reference::p4_singular_directions());
+  answer("iii. moving directions", hw::moving_directions(k), reference::p4_moving_directions());
+  answer("iii. rotation axes", hw::rotation_axes(k), reference::p4_rotation_axes());
+  const char* axes[] = {"X0", "Y0", "Z0"};
+  for (int axis : {2, 1, 0}) {
+    const opspace::SingularityType mine = hw::singularity_type(k, Eigen::Vector3d::Unit(axis));
+    table.row(std::string("iv. ") + axes[axis] + " is", type_name(mine), "",
+              type_name(reference::p4_type(axis)), mine == reference::p4_type(axis) ? "ok" : "DIFFERS");
+  }
+  table.note("directions agree when they span the same subspace: signs and bases may differ");
+  table.print(std::cout, "bash scripts/grade --problem 4 says which test and why");
 }
 
 std::string reach(const p4::Summary& s) {
@@ -77,29 +104,44 @@ std::string reach(const p4::Summary& s) {
   return out.str();
 }
 
-void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain) {
-  const auto row = [](const std::string& what, const std::string& a, const std::string& b) {
-    std::cout << "  " << std::left << std::setw(30) << what << std::setw(22) << a << b << "\n";
-  };
-  const auto num = [](double v, int digits, const std::string& unit) {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(digits) << v << unit;
-    return s.str();
-  };
+std::string final_q(const p4::Result& r) {
+  return r.samples.empty() ? "-" : vec(r.samples.back().q * 180.0 / 3.14159265358979323846, 1);
+}
+
+/// Question v toward `target`: your controller beside the grader's bounds and the reference,
+/// then the plain controller from the same start.
+void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain, double duration) {
+  const p4::Summary& s = mine.summary;
+  const p4::Summary ref = reference::p4(target);
   std::cout << "\nquestion v, " << p4::describe(target) << ": target " << vec(p4::goal(target).x_d) << " m\n";
-  row("", "your controller", "plain controller");
-  row("reached within " + num(1e3 * p4::kReachTolerance, 0, " mm") + " from",
-      reach(mine.summary), reach(plain.summary));
-  row("final error", num(1e3 * mine.summary.final_error, 1, " mm"), num(1e3 * plain.summary.final_error, 1, " mm"));
-  row("peak joint torque", num(mine.summary.peak_torque, 1, " N m (joint " + std::to_string(mine.summary.peak_torque_joint + 1) + ")"),
-      num(plain.summary.peak_torque, 1, " N m (joint " + std::to_string(plain.summary.peak_torque_joint + 1) + ")"));
-  row("torques clamped to limits", std::to_string(mine.summary.clamped_steps) + " joint-steps",
-      std::to_string(plain.summary.clamped_steps) + " joint-steps");
-  if (!mine.samples.empty() && !plain.samples.empty()) {
-    const Eigen::Vector3d qa = mine.samples.back().q * 180.0 / 3.14159265358979323846;
-    const Eigen::Vector3d qb = plain.samples.back().q * 180.0 / 3.14159265358979323846;
-    row("final joint angles (deg)", vec(qa, 1), vec(qb, 1));
+  if (std::abs(duration - reference::kP4Duration) > 1e-9) {
+    std::cout << "note: the grader and the reference run " << cli::show(reference::kP4Duration, cli::kSeconds)
+              << "; over " << cli::show(duration, cli::kSeconds) << " the comparison below is only indicative\n";
   }
+  cli::Verdict table(cli::reference_heading(reference::kP4Duration), "your controller");
+  table.section("");
+  const bool reached = s.reach_time >= 0 && s.reach_time <= p4::kReachTimeMax;
+  table.row("reached within " + cli::show(p4::kReachTolerance, cli::kMm) + " from", reach(s),
+            "<= " + cli::show_bound(p4::kReachTimeMax, cli::kSeconds), reach(ref), reached ? "ok" : "MISSES");
+  table.shown("final error", s.final_error, ref.final_error, cli::kMm);
+  table.row("peak joint torque", cli::show(s.peak_torque, cli::kNewtonMetre) + cli::joint(s.peak_torque_joint),
+            "<= " + cli::show_bound(p4::kPeakTorqueMax, cli::kNewtonMetre),
+            cli::show(ref.peak_torque, cli::kNewtonMetre) + cli::joint(ref.peak_torque_joint),
+            s.peak_torque <= p4::kPeakTorqueMax ? "ok" : "MISSES");
+  table.shown("torques clamped to limits", static_cast<double>(s.clamped_steps), static_cast<double>(ref.clamped_steps),
+              cli::kJointSteps);
+  table.row("final joint angles (deg)", final_q(mine), "not graded",
+            vec(reference::p4_final_q(target) * 180.0 / 3.14159265358979323846, 1));
+  table.print(std::cout, "bash scripts/grade --problem 4 says which test and why");
+  const p4::Summary& p = plain.summary;
+  std::cout << "the plain controller from the same start (the library's, not yours): reached " << reach(p)
+            << ", final error " << cli::show(p.final_error, cli::kMm) << ",\n  peak torque "
+            << cli::show(p.peak_torque, cli::kNewtonMetre) << cli::joint(p.peak_torque_joint) << ", "
+            << cli::show(static_cast<double>(p.clamped_steps), cli::kJointSteps) << " clamped, final q "
+            << final_q(plain) << " deg\n  expected: without the self-motion potential "
+            << (target == Target::kAlongZ0 ? "it needs torques beyond the limits"
+                                           : "the arm's plane never turns toward Y0")
+            << " (the grader checks that contrast)\n";
   if (!mine.failure.empty()) std::cout << "  your run stopped early: " << mine.failure << "\n";
   if (!plain.failure.empty()) std::cout << "  the plain run stopped early: " << plain.failure << "\n";
 }
@@ -112,23 +154,29 @@ int main(int argc, char** argv) {
   const int code = cli::parse_p4(argc, argv, &usage, command);
   if (code >= 0) return code;
   cli::Options& options = command.options;
+  if (!cli::watchdog_from_environment(argv[0], options)) return 2;
   std::cout << "problem 4, 3R elbow arm (" << OPSPACE_GRADED_LIBRARY << ")\n";
   return cli::guarded(argv[0], [&] {
-    questions_i_to_iv();
+    {
+      // Your functions of questions i-iv run outside any closed loop: watched as one step.
+      opspace::scenarios::Watchdog watchdog(options.run.watchdog, "problem 4, questions i-iv");
+      questions_i_to_iv();
+    }
     bool ok = true;
     for (Target target : command.targets) {
       const std::string name = target == Target::kAlongZ0 ? "z" : "y";
       options.run.progress = &std::cerr;
-      options.run.csv_path = "out/hw2-p4-" + name + ".csv";
+      const std::string prefix = cli::output_path("hw2-p4-" + name);
+      options.run.csv_path = prefix + ".csv";
       const p4::Result mine = p4::run(target, &hw::control, options.run);
-      options.run.csv_path = "out/hw2-p4-" + name + "-plain.csv";
+      options.run.csv_path = prefix + "-plain.csv";
       const p4::Result plain = p4::run_plain(target, options.run);
-      side_by_side(target, mine, plain);
-      std::cout << "  logs: out/hw2-p4-" << name << ".csv, out/hw2-p4-" << name << "-plain.csv\n";
+      side_by_side(target, mine, plain, options.run.duration);
+      std::cout << "  logs: " << prefix << ".csv, " << prefix << "-plain.csv\n";
       // After the runs: drawing never slows the control loop.
       if (!mine.samples.empty()) {
         cli::publish(
-            options, "out/hw2-p4-" + name, [&] { return p4::figures(target, mine, plain); },
+            options, prefix, [&] { return p4::figures(target, mine, plain); },
             [&] { return p4::replay_scene(target, mine, plain); });
       }
       ok = ok && mine.failure.empty();

@@ -106,8 +106,8 @@ Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
   const Model puma = load_urdf(robot_path(kRobotFile));
   Observer observer(puma);
   // PART2's law spins the light wrist (its links weigh 0.1-0.8 kg and the model, like Bullet,
-  // has no motor inertia) to ~200 rad/s: that wild motion is the lesson, so the run must not
-  // stop below kMaxJointSpeed.
+  // has no motor inertia) to a few hundred rad/s: that wild motion is the lesson, so the run
+  // must not stop below kMaxJointSpeed.
   SimulationSettings settings;
   settings.max_joint_speed = kMaxJointSpeed;
   Simulation sim(puma, settings);
@@ -116,7 +116,7 @@ Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
   const std::string who = "your " + describe(part).substr(0, describe(part).find(':')) + " controller";
   const Eigen::Vector3d x_d = goal(0.0, initial_q()).x_d;
   Result result = run_closed_loop<Result>(
-      sim, "hw2-p1", csv_columns(), options,
+      sim, "hw2-p1", "problem 1b, " + describe(part), csv_columns(), options,
       [&](double t) {
         const hw2::p1b::State& state = observer.observe(t, sim.q(), sim.qdot());
         const hw2::p1b::Goal g = goal(t, state.q);

@@ -153,7 +153,7 @@ Result run(Controller control, DesiredAcceleration desired_acceleration, const R
   sim.set_state(initial_q(), Vector7d::Zero());
 
   Result result = run_closed_loop<Result>(
-      sim, "hw2-p2", csv_columns(), options,
+      sim, "hw2-p2", "problem 2", csv_columns(), options,
       [&](double t) {
         hw2::p2::Goal g = goal(t);
         g.xddot_d = desired_acceleration(t);

@@ -56,7 +56,7 @@ Result simulate(Target target, const std::string& who, Law law, const RunOptions
   const hw2::p4::Goal g = goal(target);
 
   Result result = run_closed_loop<Result>(
-      sim, "hw2-p4", csv_columns(), options,
+      sim, "hw2-p4", "problem 4, question v " + describe(target) + ", " + who, csv_columns(), options,
       [&](double t) {
         const hw2::p4::State& state = observer.observe(t, sim.q(), sim.qdot());
         const Eigen::Vector3d tau = law(state, observer.exact(), g);

@@ -93,15 +93,16 @@ TEST_CASE("hw2-p1 names its log after the part unless --csv names it, in any ord
   struct Case {
     std::vector<std::string> args;
     Part part;
-    const char* csv;
+    std::string csv;
   };
-  // The defaults of hw2-p1's usage text; before, a --csv given before --no-joint-damping was
-  // replaced by the no-damping default.
+  // The defaults of hw2-p1's usage text (in the repository's out/, wherever it runs); before, a
+  // --csv given before --no-joint-damping was replaced by the no-damping default.
   const Case table[] = {
-      {{"hw2-p1", "1"}, Part::kTipPd, "out/hw2-p1-part1.csv"},
-      {{"hw2-p1", "3"}, Part::kDynamicallyConsistentNullspace, "out/hw2-p1-part3.csv"},
-      {{"hw2-p1", "compare"}, Part::kPseudoInverseNullspace, "out/hw2-p1-compare.csv"},
-      {{"hw2-p1", "1", "--no-joint-damping"}, Part::kTipPdWithoutJointDamping, "out/hw2-p1-part1-no-damping.csv"},
+      {{"hw2-p1", "1"}, Part::kTipPd, cli::output_path("hw2-p1-part1.csv")},
+      {{"hw2-p1", "3"}, Part::kDynamicallyConsistentNullspace, cli::output_path("hw2-p1-part3.csv")},
+      {{"hw2-p1", "compare"}, Part::kPseudoInverseNullspace, cli::output_path("hw2-p1-compare.csv")},
+      {{"hw2-p1", "1", "--no-joint-damping"}, Part::kTipPdWithoutJointDamping,
+       cli::output_path("hw2-p1-part1-no-damping.csv")},
       {{"hw2-p1", "1", "--csv", "run/a.csv", "--no-joint-damping"}, Part::kTipPdWithoutJointDamping, "run/a.csv"},
       {{"hw2-p1", "1", "--no-joint-damping", "--csv", "run/a.csv"}, Part::kTipPdWithoutJointDamping, "run/a.csv"},
   };

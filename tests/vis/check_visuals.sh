@@ -11,11 +11,21 @@
 #                               runs PROGRAM ARG... in WORKDIR; the one page it prints on its
 #                               'replay:' line must pass CHECK_SCRIPT (web/test/check_replay.mjs)
 #                               in headless Chromium, the robot covering > MIN_ROBOT_SHARE of it
+#   check_visuals.sh judged     PROGRAM WORKDIR ARG...  a reference (-sol) run at its default
+#                               duration: every row of its table ok, and this run's value equal
+#                               to the reference column (computed at build time)
+#   check_visuals.sh misses     PROGRAM WORKDIR ARG...  a run of the exercise stubs: its table
+#                               says MISSES and where the grader explains it
+#   check_visuals.sh out-dir    PROGRAM WORKDIR         the default outputs land in $OPSPACE_OUT
+#                               (the repository's out/ by default) wherever the program runs from
+# The programs write their default outputs into $OPSPACE_OUT: WORKDIR/out here, never the
+# repository's out/.
 # Exit 77 (ctest: skipped) when gnuplot, node, the viewer bundle or Chromium is missing,
 # unless CI is set: CI installs them (scripts/setup.sh), so there a missing tool fails.
 set -uo pipefail
 mode=$1 program=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
+export OPSPACE_OUT="$work/out"
 fail() { echo "FAIL: $*"; exit 1; }
 skip() {
   if [ -n "${CI:-}" ]; then fail "$* (CI is set: scripts/setup.sh should have installed it)"; fi
@@ -76,7 +86,7 @@ case "$mode" in
     ;;
   plots-p3)
     need_gnuplot
-    # 2 simulated seconds: the contact has settled, every figure has data.
+    # 2 simulated seconds: every figure has data after the first second.
     run "$program" --duration 2 --csv run/p3.csv --no-replay
     cd "$work"
     check_plots out.txt run/p3 force tracking tilt
@@ -127,6 +137,49 @@ case "$mode" in
     [ $status -eq 77 ] && skip "Chromium could not be started"
     [ $status -eq 0 ] || fail "the replay page failed in headless Chromium"
     [ -s "$screenshot" ] || fail "no screenshot"
+    ;;
+  judged)
+    shift 3
+    run "$program $*" "$@" --no-plots --no-replay
+    grep -q '  reference (' "$work/out.txt" || fail "no table with a reference column"
+    ! grep -E '  (MISSES|DIFFERS)$' "$work/out.txt" || fail "the reference run misses its own bounds"
+    # Rows are indented by two spaces, their columns separated by two or more: what, this run,
+    # [what it should be,] reference[, verdict]. The reference column is the build's reference
+    # run, which this very run repeats.
+    rows=0
+    while IFS= read -r line; do
+      mapfile -t field < <(printf '%s\n' "${line#  }" | sed 's/   */\n/g')
+      [ ${#field[@]} -ge 3 ] || continue
+      last=${field[-1]}
+      case "$last" in ok|MISSES|DIFFERS) reference=${field[-2]} ;; *) reference=$last ;; esac
+      [ "${field[1]}" = "$reference" ] || fail "this run's '${field[1]}' differs from the reference '$reference' in: $line"
+      rows=$((rows + 1))
+    done < <(grep '^  [^ ]' "$work/out.txt")
+    [ $rows -ge 3 ] || fail "only $rows rows compared"
+    echo "ok   $rows rows equal to the reference"
+    ;;
+  misses)
+    shift 3
+    run "$program $*" "$@" --no-plots --no-replay
+    grep -qE '  MISSES$' "$work/out.txt" || fail "no row says MISSES"
+    grep -qE 'miss(es)? what (it|they) should be: bash scripts/grade --problem' "$work/out.txt" ||
+      fail "no pointer to the grader"
+    ;;
+  out-dir)
+    # From a directory outside $OPSPACE_OUT's parent: absolute paths into $OPSPACE_OUT.
+    mkdir -p "$work/elsewhere"
+    (cd "$work/elsewhere" && "$program" z --duration 0.2 --no-plots --no-replay) > "$work/out.txt" 2>&1 ||
+      { cat "$work/out.txt"; fail "$program failed"; }
+    cat "$work/out.txt"
+    grep -qx "  logs: $work/out/hw2-p4-z.csv, $work/out/hw2-p4-z-plain.csv" "$work/out.txt" ||
+      fail "expected the logs in $work/out, printed as absolute paths"
+    [ -s "$work/out/hw2-p4-z.csv" ] || fail "$work/out/hw2-p4-z.csv was not written"
+    [ ! -e "$work/elsewhere/out" ] || fail "the program wrote into the directory it ran from"
+    # From the folder holding out/: the short relative path.
+    (cd "$work" && "$program" z --duration 0.2 --no-plots --no-replay) > "$work/out.txt" 2>&1 ||
+      { cat "$work/out.txt"; fail "$program failed"; }
+    grep -qx "  logs: out/hw2-p4-z.csv, out/hw2-p4-z-plain.csv" "$work/out.txt" ||
+      { cat "$work/out.txt"; fail "expected the logs printed as out/hw2-p4-z.csv"; }
     ;;
   *) fail "unknown mode $mode" ;;
 esac

@@ -156,6 +156,8 @@ function main() {
   hud.append(el('h1', {}, data.title));
   if (data.subtitle) hud.append(el('p', { class: 'sub' }, data.subtitle));
   const readout = el('pre', { id: 'readout' });
+  // As many lines as show() writes, so that the panel has its final size when the view is framed.
+  readout.textContent = ['t = 0.000 s', ...data.hud.map((h) => `${h.label}: 0.000`)].join('\n');
   hud.append(readout);
   const legend = el('ul', { id: 'legend' });
   legend.append(el('li', {}, 'robot: URDF visual shapes'));
@@ -230,15 +232,37 @@ function main() {
   const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 100);
   camera.up.set(0, 0, 1);
   const view = new THREE.Vector3(...(data.view || [1, -1, 0.7])).normalize();
-  camera.position.copy(center).addScaledVector(view, radius / Math.tan((20 * Math.PI) / 180) * 1.45);
+
+  // The info panel covers the top left of the stage: the scene is framed in the larger of the
+  // free areas beside it and below it, by moving the image's centre there (a view offset).
+  function freeArea(w, h) {
+    const right = hud.offsetLeft + hud.offsetWidth + 8, bottom = hud.offsetTop + hud.offsetHeight + 8;
+    const beside = { x: right, y: 0, w: Math.max(1, w - right), h };
+    const below = { x: 0, y: bottom, w, h: Math.max(1, h - bottom) };
+    const side = (a) => Math.min(a.w, a.h);
+    return side(beside) >= side(below) ? beside : below;
+  }
+  function stageSize() {
+    return [stage.clientWidth || window.innerWidth, stage.clientHeight || window.innerHeight];
+  }
+  {
+    // Far enough that the sphere around the framed box spans 1/1.45 of the stage's height
+    // (vertical field of view 40 deg), or less if the free area is smaller than that.
+    const [w, h] = stageSize();
+    const area = freeArea(w, h);
+    const shrink = Math.max(1, h / 1.45 / Math.min(area.w, area.h));
+    camera.position.copy(center).addScaledVector(view, radius / Math.tan((20 * Math.PI) / 180) * 1.45 * shrink);
+  }
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.target.copy(center);
   controls.update();
 
   function resize() {
-    const w = stage.clientWidth || window.innerWidth, h = stage.clientHeight || window.innerHeight;
+    const [w, h] = stageSize();
     renderer.setSize(w, h, false);
     camera.aspect = w / h;
+    const area = freeArea(w, h);
+    camera.setViewOffset(w, h, w / 2 - (area.x + area.w / 2), h / 2 - (area.y + area.h / 2), w, h);
     camera.updateProjectionMatrix();
   }
   window.addEventListener('resize', resize);

@@ -158,7 +158,7 @@ void position_tracking(const Hw2Api& api, Check& check) {
   // 0.05 (2w)^2 / |kpx - 4 w^2 + 2 j kvx w| = 4.7 mm: 3.9 mm RMS (closed form of the
   // second-order error dynamics). With it, only the uncompensated Coriolis forces remain
   // (tenths of a mm on the reference). 1 mm RMS separates the two.
-  check.at_most("position error RMS after 1 s", r.summary.position_error_rms, 1e-3,
+  check.at_most("position error RMS after 1 s", r.summary.position_error_rms, p2::kPositionErrorRmsMax,
                 "link7's origin should follow x_d = (0, 0.5 + 0.1 cos(2 pi t/5), 0.65 - 0.05 cos(4 pi t/5))",
                 1e3, "mm");
 }
@@ -170,7 +170,7 @@ void orientation_tracking(const Hw2Api& api, Check& check) {
   // (pi/2) w^2 = 2.5 rad/s^2. Without feed-forward the PD lags it by
   // 2.5 / |kpx - w^2 + j kvx w| = 0.045 rad (0.032 rad RMS); with it the error is set by the
   // uncompensated Coriolis forces (about a milliradian). 0.01 rad (0.57 deg) RMS separates them.
-  check.at_most("orientation error RMS after 1 s (angle of R R_d^T)", r.summary.orientation_error_rms, 0.01,
+  check.at_most("orientation error RMS after 1 s (angle of R R_d^T)", r.summary.orientation_error_rms, p2::kOrientationErrorRmsMax,
                 "link7 should turn with lambda_d(t)", 1.0 / kDeg, "deg");
 }
 
@@ -178,12 +178,12 @@ void euler_parameters_stay_continuous(const Hw2Api& api, Check& check) {
   const p2::Result& r = run(api);
   if (!ran_to_the_end(r, check)) return;
   // lambda comes from an orthonormal R, normalised: unit to rounding.
-  check.that(r.summary.lambda_norm_error_max < 1e-12, "|lambda| drifted from 1");
+  check.that(r.summary.lambda_norm_error_max < p2::kLambdaNormErrorMax, "|lambda| drifted from 1");
   // |lambda(t + dt) - lambda(t)| = |E_r w| dt = |w| dt / 2. The iiwa's joint speed limits sum
   // to 16 rad/s, so a continuous lambda moves at most 8e-3 per 1 ms step; 0.01 allows that.
   // A jump of about 2 is lambda flipping to -lambda: the orientation went half a turn away
   // from lambda_d, where lambda . lambda_d changes sign.
-  check.at_most("largest change of lambda in one 1 ms step", r.summary.lambda_step_max, 0.01,
+  check.at_most("largest change of lambda in one 1 ms step", r.summary.lambda_step_max, p2::kLambdaStepMax,
                 "lambda flips sign only when link7 is half a turn away from lambda_d");
 }
 
@@ -197,7 +197,7 @@ void joints_stay_near_their_limits(const Hw2Api& api, Check& check) {
   // 5 deg allows that and flags an arm that swings away from the task's joint path.
   check.at_most("largest excursion past a URDF joint limit (joint " +
                     std::to_string(r.summary.joint_limit_joint + 1) + ")",
-                -r.summary.joint_limit_margin, 5.0 * kDeg, "the joints should stay within their URDF limits",
+                -r.summary.joint_limit_margin, p2::kJointLimitExcessMax, "the joints should stay within their URDF limits",
                 1.0 / kDeg, "deg");
 }
 
@@ -212,7 +212,7 @@ void self_motion_is_damped(const Hw2Api& api, Check& check) {
   // wanders by tens of degrees per period. 0.1 rad (5.7 deg) separates the two.
   check.at_most("joint drift between t = 5 s and t = 10 s (joint " +
                     std::to_string(r.summary.joint_drift_joint + 1) + ")",
-                r.summary.joint_drift_per_period, 0.1, "the arm should repeat its motion every 5 s period",
+                r.summary.joint_drift_per_period, p2::kJointDriftPerPeriodMax, "the arm should repeat its motion every 5 s period",
                 1.0 / kDeg, "deg");
 }
 

@@ -35,12 +35,12 @@ constexpr double kDirTol = 1e-8;
 constexpr double kLawTol = 1e-6;
 constexpr int kSamples = 6;
 // Torque limit of every joint in robots/rrr.urdf (effort = 50 N m).
-constexpr double kEffortLimit = 50.0;
+constexpr double kEffortLimit = p4::kPeakTorqueMax;
 // Task dynamics xdd = -kpx e - kvx de with kpx = 50, kvx = 20 have poles -10 +- sqrt(50), the
 // slow one at 2.93 /s: 10 cm decay to 5 mm in ln(20) / 2.93 = 1.02 s once the direction is
 // controllable. The self-motion potential (same gains) needs a few tenths of a second to
 // leave the lock. 2 s leaves room for both; the run lasts p4::kDuration = 3 s.
-constexpr double kReachBound = 2.0;
+constexpr double kReachBound = p4::kReachTimeMax;
 
 const Model& rrr() {
   static const Model model = load_urdf(robot_path(p4::kRobotFile));

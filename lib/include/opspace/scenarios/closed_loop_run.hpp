@@ -12,6 +12,7 @@
 
 #include "opspace/closed_loop.hpp"
 #include "opspace/scenarios/common.hpp"
+#include "opspace/scenarios/watchdog.hpp"
 #include "opspace/simulation.hpp"
 
 namespace opspace::scenarios {
@@ -21,20 +22,25 @@ namespace opspace::scenarios {
 /// (with its `tau`); the loop appends it to Result::samples, writes `csv_row(sample)` to the
 /// CSV log with `columns` (if options.csv_path is set), reports progress as `label` and applies
 /// `tau` for one step (not after the last sample). An exception ends the run early with its
-/// message in Result::failure; Result::summary gets time_reached and clamped_steps.
+/// message in Result::failure; Result::summary gets time_reached and clamped_steps. With
+/// options.watchdog, a step that takes longer than that stops the program with a message
+/// naming `what` (e.g. "problem 1b, PART3").
 template <class Result, class Tick, class CsvRow>
-Result run_closed_loop(Simulation& sim, const std::string& label, const std::vector<std::string>& columns,
-                       const RunOptions& options, Tick tick, CsvRow csv_row) {
+Result run_closed_loop(Simulation& sim, const std::string& label, const std::string& what,
+                       const std::vector<std::string>& columns, const RunOptions& options, Tick tick,
+                       CsvRow csv_row) {
   const long steps = std::lround(options.duration / sim.settings().dt);
   Result result;
   result.samples.reserve(static_cast<std::size_t>(steps) + 1);
   Progress progress(options.progress ? *options.progress : std::clog, label, options.duration);
   std::unique_ptr<CsvLog> csv;
   if (!options.csv_path.empty()) csv = std::make_unique<CsvLog>(options.csv_path, columns);
+  Watchdog watchdog(options.watchdog, what);
 
   try {
     for (long k = 0; k <= steps; ++k) {
       const double t = sim.time();
+      watchdog.beat(t);
       result.samples.push_back(tick(t));
       if (csv) csv->row(csv_row(result.samples.back()));
       if (options.progress) progress.update(t);
