@@ -3,8 +3,8 @@
 # bundle ($AUTOGRADER_ROOT/source, default /autograder/source). It
 #   1. installs the Debian/Ubuntu packages the grader needs (scripts/setup.sh lists them);
 #   2. builds the grader, its runner loops and the suite's own checks;
-#   3. proves the build: the graded suite's checks and the tamper suite (ctest);
-#   4. creates the unprivileged account `opspace-runner` that compiles and runs student code;
+#   3. creates the unprivileged account `opspace-runner` that compiles and runs student code;
+#   4. proves the build, graded by that account: the graded suite's checks and the tamper suite;
 #   5. removes what a student's code must not reach (solutions/, the -sol programs, the mutants
 #      and tamper cases, the graded tests' sources, every runner built from the reference) and
 #      locks the rest to root (chmod go=);
@@ -56,15 +56,7 @@ say "building the grader (log: $ROOT/setup-build.log)"
 cmake --build "$BUILD" --parallel "$jobs" --target hw2-grade hw2-grade-sol test_graded_suite > "$ROOT/setup-build.log" 2>&1 ||
   { tail -40 "$ROOT/setup-build.log"; fail "the build failed"; }
 
-# --- 3. prove the build -----------------------------------------------------------------------
-# The reference earns full marks, the stubs 0, each mutant loses its tests, and each tamper case
-# earns no more than its honest share, all on this machine, with its kernel and container.
-say "proving the build: ctest -R '^(graded|grader|tamper): '"
-ctest --test-dir "$BUILD" -R '^(graded|grader|tamper): ' --parallel "$jobs" --output-on-failure > "$ROOT/setup-proof.log" 2>&1 ||
-  { grep -E 'tests passed|Failed|\*\*\*' "$ROOT/setup-proof.log" | tail -30; fail "the proof failed (log: $ROOT/setup-proof.log)"; }
-grep -E 'tests passed|Skipped|SKIPPED' "$ROOT/setup-proof.log" || true
-
-# --- 4. the runner's account -----------------------------------------------------------------
+# --- 3. the runner's account -----------------------------------------------------------------
 if [ "$(id -u)" -eq 0 ]; then
   if ! getent passwd "$RUNNER_USER" > /dev/null; then
     useradd --system --no-create-home --home-dir /nonexistent --shell /usr/sbin/nologin "$RUNNER_USER"
@@ -73,6 +65,14 @@ if [ "$(id -u)" -eq 0 ]; then
 else
   say "not root: no $RUNNER_USER account (only a test run under AUTOGRADER_ROOT does this)"
 fi
+
+# --- 4. prove the build -----------------------------------------------------------------------
+# The reference earns full marks, the stubs 0, each mutant loses its tests, and each tamper case
+# earns no more than its honest share, all on this machine, with its kernel and container.
+say "proving the build: ctest -R '^(graded|grader|tamper): '"
+ctest --test-dir "$BUILD" -R '^(graded|grader|tamper): ' --parallel "$jobs" --output-on-failure > "$ROOT/setup-proof.log" 2>&1 ||
+  { grep -E 'tests passed|Failed|\*\*\*' "$ROOT/setup-proof.log" | tail -30; fail "the proof failed (log: $ROOT/setup-proof.log)"; }
+grep -E 'tests passed|Skipped|SKIPPED' "$ROOT/setup-proof.log" || true
 
 # --- 5. lockdown ------------------------------------------------------------------------------
 say "removing the reference, the mutants, the tamper cases and the graded tests' sources"
