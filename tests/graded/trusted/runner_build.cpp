@@ -258,13 +258,18 @@ const std::vector<std::string>* inputs_of(const Toolchain& toolchain, const std:
   return nullptr;
 }
 
+// Temporary names are the process's own: graders running at once (scripts/regrade) may build
+// the same runner, and each renames only a file it wrote whole.
+std::string temporary(const std::string& path) { return path + ".tmp" + std::to_string(getpid()); }
+
 // Saves and restores what a cached build reported besides its binary.
 void save_report(const std::string& path, const BuiltRunner& built) {
-  std::ofstream out(path + ".tmp");
+  const std::string tmp = temporary(path);
+  std::ofstream out(tmp);
   out << built.warnings.size() << "\n" << built.warnings << "\n";
   for (const std::string& call : built.calls) out << call << "\n";
   out.close();
-  fs::rename(path + ".tmp", path);
+  fs::rename(tmp, path);
 }
 
 bool load_report(const std::string& path, BuiltRunner& built) {
@@ -457,10 +462,11 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
     built.error = "linking failed: " + built.error;
     return built;
   }
-  fs::copy_file(work + "/runner", cached + ".tmp", fs::copy_options::overwrite_existing);
-  fs::permissions(cached + ".tmp", fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                                       fs::perms::others_read | fs::perms::others_exec);
-  fs::rename(cached + ".tmp", cached);
+  const std::string tmp = temporary(cached);
+  fs::copy_file(work + "/runner", tmp, fs::copy_options::overwrite_existing);
+  fs::permissions(tmp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                           fs::perms::others_read | fs::perms::others_exec);
+  fs::rename(tmp, cached);
   save_report(cached + ".report", built);
   built.ok = true;
   built.binary = cached;

@@ -1,0 +1,199 @@
+// The handout's graded suite: the real suite's tests (names, points, hints), each replaying the
+// calls it made to the reference solutions, recorded by the instructor's hw2-record
+// (tests/graded/visible/suite.txt): your function gets the same arguments and must give the
+// same answer. Numbers, not code: this suite holds no reference implementation. The course's
+// autograder grades with fresh random inputs and runs the simulations with your controller.
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <tuple>
+
+#include "protocol/codec.hpp"
+#include "protocol/protocol.hpp"
+#include "recorded.hpp"
+#include "suite.hpp"
+
+namespace opspace::grading {
+
+namespace {
+
+using protocol::Function;
+using recorded::Bytes;
+
+// |computed - expected| <= kTol * max(1, |expected|), entry by entry: round-off between two
+// correct ways of computing a formula is ~1e-12 relative; a wrong formula is off by far more.
+constexpr double kTol = 1e-7;
+
+// --- every value as a list of numbers, for comparing and printing ---------------------------
+void flatten(double v, std::vector<double>& out) { out.push_back(v); }
+void flatten(int v, std::vector<double>& out) { out.push_back(v); }
+void flatten(bool v, std::vector<double>& out) { out.push_back(v ? 1.0 : 0.0); }
+template <class E, std::enable_if_t<std::is_enum_v<E>, int> = 0>
+void flatten(E v, std::vector<double>& out) {
+  out.push_back(static_cast<int>(v));
+}
+template <int R, int C, int O>
+void flatten(const Eigen::Matrix<double, R, C, O, R, C>& m, std::vector<double>& out) {
+  for (int j = 0; j < C; ++j)
+    for (int i = 0; i < R; ++i) out.push_back(m(i, j));
+}
+template <class T, std::size_t N>
+void flatten(const std::array<T, N>& a, std::vector<double>& out) {
+  for (const T& x : a) flatten(x, out);
+}
+template <class S, class = decltype(protocol::fields(std::declval<S&>(), protocol::AnyField{}, static_cast<S*>(nullptr)))>
+void flatten(const S& s, std::vector<double>& out) {
+  protocol::fields(s, [&out](const auto& x) { flatten(x, out); }, static_cast<S*>(nullptr));
+}
+
+std::string text(const std::vector<double>& values) {
+  std::ostringstream out;
+  out.precision(6);
+  out << "[";
+  const std::size_t shown = std::min<std::size_t>(values.size(), 12);
+  for (std::size_t i = 0; i < shown; ++i) out << (i ? ", " : "") << values[i];
+  if (shown < values.size()) out << ", ... (" << values.size() << " numbers)";
+  return out.str() + "]";
+}
+
+template <class T>
+std::vector<double> numbers(const T& value) {
+  std::vector<double> out;
+  flatten(value, out);
+  return out;
+}
+
+// Compares an answer with the recorded one. Directions are compared as subspaces (the
+// projector U U^T of their first `count` columns): any orthonormal basis, any sign, is right.
+template <class T>
+std::string difference(const T& expected, const T& computed) {
+  const std::vector<double> e = numbers(expected), c = numbers(computed);
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    if (!(std::abs(c[i] - e[i]) <= kTol * std::max(1.0, std::abs(e[i]))))
+      return "expected " + text(e) + ", computed " + text(c);
+  }
+  return "";
+}
+std::string difference(const hw2::p4::Directions& expected, const hw2::p4::Directions& computed) {
+  if (computed.count != expected.count)
+    return "expected " + std::to_string(expected.count) + " directions, computed " + std::to_string(computed.count);
+  if (computed.count < 0 || computed.count > 3) return "a count outside 0..3";
+  const Eigen::Matrix3d E = expected.u.leftCols(expected.count) * expected.u.leftCols(expected.count).transpose();
+  const Eigen::Matrix3d C = computed.u.leftCols(computed.count) * computed.u.leftCols(computed.count).transpose();
+  if ((C - E).cwiseAbs().maxCoeff() <= 1e-6) return "";
+  return "they span another subspace: expected the span of " + text(numbers(Eigen::Matrix3d(expected.u))) +
+         " (first " + std::to_string(expected.count) + " columns), computed " + text(numbers(Eigen::Matrix3d(computed.u)));
+}
+
+// Decodes the recorded arguments, calls `slot` (your function, in its runner) and compares the
+// answer with the recorded one. Returns "" when they agree.
+template <class R, class... A>
+std::string replay(const std::function<R(A...)>& slot, const recorded::Call& call) {
+  std::tuple<std::decay_t<A>...> args;
+  protocol::Reader in(call.arguments.data(), call.arguments.size());
+  std::apply([&in](auto&... a) { (protocol::get(in, a), ...); }, args);
+  in.finish();
+  R expected{};
+  protocol::Reader answer(call.answer.data(), call.answer.size());
+  protocol::get(answer, expected);
+  answer.finish();
+  const R computed = std::apply(slot, args);
+  std::string out = difference(expected, computed);
+  if (out.empty()) return out;
+  std::vector<double> inputs;
+  std::apply([&inputs](const auto&... a) { (flatten(a, inputs), ...); }, args);
+  if (!inputs.empty() && inputs.size() <= 12) out = "for the arguments " + text(inputs) + ": " + out;
+  return out;
+}
+
+std::string replay(const Hw2Api& api, const recorded::Call& call, std::string& name) {
+  switch (static_cast<Function>(call.function)) {
+    case Function::kP1aDegreesOfFreedom: name = "degrees_of_freedom"; return replay(api.p1a.degrees_of_freedom, call);
+    case Function::kP1aMassMatrix: name = "mass_matrix"; return replay(api.p1a.mass_matrix, call);
+    case Function::kP1aTaskJacobian: name = "task_jacobian"; return replay(api.p1a.task_jacobian, call);
+    case Function::kP1aPseudoInverse: name = "pseudo_inverse"; return replay(api.p1a.pseudo_inverse, call);
+    case Function::kP1aWeightedInverse: name = "weighted_inverse"; return replay(api.p1a.weighted_inverse, call);
+    case Function::kP1aInertiaWeightedInverse: name = "inertia_weighted_inverse"; return replay(api.p1a.inertia_weighted_inverse, call);
+    case Function::kP1aNullspaceProjector: name = "nullspace_projector"; return replay(api.p1a.nullspace_projector, call);
+    case Function::kP1aInverseKinematicsStep: name = "inverse_kinematics_step"; return replay(api.p1a.inverse_kinematics_step, call);
+    case Function::kP1aSplitDisplacement: name = "split_displacement"; return replay(api.p1a.split_displacement, call);
+    case Function::kP1bControl: name = "control"; return replay(api.p1b.control, call);
+    case Function::kP2DesiredAcceleration: name = "desired_acceleration"; return replay(api.p2.desired_acceleration, call);
+    case Function::kP2DesiredTwistAcceleration: name = "desired_twist_acceleration"; return replay(api.p2.desired_twist_acceleration, call);
+    case Function::kP2Control: name = "control"; return replay(api.p2.control, call);
+    case Function::kP3MotionSelection: name = "motion_selection"; return replay(api.p3.motion_selection, call);
+    case Function::kP3ForceSelection: name = "force_selection"; return replay(api.p3.force_selection, call);
+    case Function::kP3Control: name = "control"; return replay(api.p3.control, call);
+    case Function::kP4DegreesOfFreedom: name = "degrees_of_freedom"; return replay(api.p4.degrees_of_freedom, call);
+    case Function::kP4SingularDirections: name = "singular_directions"; return replay(api.p4.singular_directions, call);
+    case Function::kP4MovingDirections: name = "moving_directions"; return replay(api.p4.moving_directions, call);
+    case Function::kP4RotationAxes: name = "rotation_axes"; return replay(api.p4.rotation_axes, call);
+    case Function::kP4SingularityType: name = "singularity_type"; return replay(api.p4.singularity_type, call);
+    case Function::kP4Control: name = "control"; return replay(api.p4.control, call);
+  }
+  throw std::runtime_error("the visible suite names an unknown function");
+}
+
+// The recorded suite, read once; `error` says why it could not be read.
+const std::vector<recorded::Problem>& recorded_suite(std::string& error) {
+  static std::string read_error;
+  static const std::vector<recorded::Problem> suite = [] {
+    try {
+      return recorded::read(OPSPACE_VISIBLE_SUITE);
+    } catch (const std::exception& e) {
+      read_error = e.what();
+      return std::vector<recorded::Problem>{};
+    }
+  }();
+  error = read_error;
+  return suite;
+}
+
+Problem problem(const std::string& key) {
+  std::string error;
+  const std::vector<recorded::Problem>& suite = recorded_suite(error);
+  if (!error.empty()) {
+    // A report that says what is wrong, rather than a grader that stops.
+    const std::string finding = "the visible suite could not be read: " + error;
+    return {key, "problem " + key, {{"the visible suite is there", 1.0, "", [finding](const Hw2Api&, Check& check) {
+                                       check.that(false, finding);
+                                     }}}};
+  }
+  for (const recorded::Problem& r : suite) {
+    if (r.key != key) continue;
+    Problem p{r.key, r.title + " (visible suite: the reference's answers at recorded inputs)", {}};
+    for (const recorded::Test& t : r.tests) {
+      GradedTest test{t.name, t.points, t.hint, {}};
+      test.body = [&t](const Hw2Api& api, Check& check) {
+        for (std::size_t i = 0; i < t.calls.size(); ++i) {
+          std::string name;
+          const std::string wrong = replay(api, t.calls[i], name);
+          if (!wrong.empty()) {
+            check.that(false, name + ", recorded call " + std::to_string(i + 1) + " of " + std::to_string(t.calls.size()) +
+                                  ": " + wrong);
+            return;
+          }
+        }
+      };
+      p.tests.push_back(std::move(test));
+    }
+    return p;
+  }
+  const std::string finding = std::string(OPSPACE_VISIBLE_SUITE) + " has no problem " + key;
+  return {key, "problem " + key, {{"the visible suite has this problem", 1.0, "", [finding](const Hw2Api&, Check& check) {
+                                     check.that(false, finding);
+                                   }}}};
+}
+
+}  // namespace
+
+Problem problem_1a() { return problem("1a"); }
+Problem problem_1b() { return problem("1b"); }
+Problem problem_2() { return problem("2"); }
+Problem problem_3() { return problem("3"); }
+Problem problem_4() { return problem("4"); }
+
+std::vector<Problem> graded_suite() { return {problem_1a(), problem_1b(), problem_2(), problem_3(), problem_4()}; }
+
+}  // namespace opspace::grading

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# The Gradescope bundle end to end, in a temporary AUTOGRADER_ROOT (what Gradescope does, step
+# by step): scripts/autograder writes the zip; it is unzipped into ROOT/source; setup.sh and
+# run_autograder are copied to ROOT; setup.sh runs from ROOT/source (installs, builds, proves,
+# locks down); then run_autograder grades one submission after another, each in a fresh
+# ROOT/submission and ROOT/results:
+#   stubs -> 0; the reference -> full marks; the reference with p2.cpp broken -> only 2 at 0;
+#   a malformed submission (no exercise file) -> a clear message, a valid results.json, 0;
+#   files in a subfolder, a symbolic link, a missing file -> found, refused, graded as the stub;
+#   no grader at all -> still a valid results.json that says so.
+# As root, setup.sh creates the account opspace-runner on this machine (as on Gradescope).
+#   bash tests/deploy/autograder.sh REPO WORK
+set -euo pipefail
+repo=$1 work=$2
+check="$repo/tests/deploy/check_json.cmake"
+root="$work/root"
+options=(--hidden "in simulation")  # grader options pass through the bundle
+if [ "${AUTOGRADER_TEST_REUSE:-}" = 1 ] && [ -f "$root/setup-done" ]; then
+  # A developer's shortcut: the submissions again, on the image an earlier run set up.
+  echo "AUTOGRADER_TEST_REUSE=1: reusing $root (no new bundle, no setup.sh)"
+  printf '%s\n' "${options[@]}" > "$root/source/opspace/deploy/grader-options"
+else
+  rm -rf "$work"
+  mkdir -p "$work"
+  bash "$repo/scripts/autograder" "$work/bundle" -- "${options[@]}"
+  mkdir -p "$root/source"
+  (cd "$root/source" && cmake -E tar xf "$work/bundle/autograder.zip")
+  [ -x "$root/source/run_autograder" ] && [ -f "$root/source/setup.sh" ] ||
+    { echo "setup.sh and an executable run_autograder must be at the top of the zip"; exit 1; }
+  cp "$root/source/run_autograder" "$root/source/setup.sh" "$root/"
+  start=$(date +%s)
+  (cd "$root/source" && AUTOGRADER_ROOT="$root" bash ./setup.sh)
+  echo "TIME setup.sh: $(seconds "$start") s (load: $(cut -d' ' -f1-3 /proc/loadavg))"
+  touch "$root/setup-done"
+fi
+for gone in solutions tests/mutants tests/tamper build/release/apps/hw2-grade-sol build/release/grading-cache/none; do
+  [ ! -e "$root/source/opspace/$gone" ] || { echo "setup.sh left $gone"; exit 1; }
+done
+rm -rf "$work"/submission-* "$work/stubs"
+
+stubs="$work/stubs"
+mkdir -p "$stubs"
+for f in p1a p1b p2 p3 p4; do git -C "$repo" show "HEAD:exercises/$f.cpp" > "$stubs/$f.cpp"; done
+
+# grade NAME: grades $work/NAME (the submission) and keeps its results as $work/NAME.json.
+grade() {
+  rm -rf "$root/submission" "$root/results"
+  cp -a "$work/$1" "$root/submission"
+  local t0
+  t0=$(date +%s)
+  AUTOGRADER_ROOT="$root" "$root/run_autograder" > "$work/$1.log" 2>&1 ||
+    { cat "$work/$1.log"; echo "run_autograder exited non-zero"; exit 1; }
+  echo "TIME run_autograder ($1): $(seconds "$t0") s (load: $(cut -d' ' -f1-3 /proc/loadavg))"
+  cp "$root/results/results.json" "$work/$1.json"
+}
+
+mkdir -p "$work/submission-stubs"
+cp "$stubs"/*.cpp "$work/submission-stubs/"
+grade submission-stubs
+cmake -DJSON="$work/submission-stubs.json" "-DZERO=1a;1b;2;3;4" -P "$check"
+
+mkdir -p "$work/submission-reference"
+cp "$repo"/solutions/p*.cpp "$work/submission-reference/"
+grade submission-reference
+cmake -DJSON="$work/submission-reference.json" "-DFULL=1a;1b;2;3;4" -P "$check"
+grep -q '"name": "1b ii. in simulation[^"]*", [^}]*"visibility": "hidden"' "$work/submission-reference.json" ||
+  { echo "the grader options of the bundle were not applied (--hidden)"; exit 1; }
+
+mkdir -p "$work/submission-broken"
+cp "$repo"/solutions/p*.cpp "$work/submission-broken/"
+printf 'this is not C++\n' > "$work/submission-broken/p2.cpp"
+grade submission-broken
+cmake -DJSON="$work/submission-broken.json" "-DFULL=1a;1b;3;4" -DZERO=2 "-DOUTPUT=exercises/p2.cpp:1:" -P "$check"
+
+mkdir -p "$work/submission-malformed"
+printf '%%PDF-1.4\n' > "$work/submission-malformed/answers.pdf"
+cp "$repo/solutions/p1a.cpp" "$work/submission-malformed/P1A.CPP"
+grade submission-malformed
+cmake -DJSON="$work/submission-malformed.json" "-DZERO=1a;1b;2;3;4" \
+  "-DOUTPUT=No exercise file was found;'P1A.CPP'[^\n]*the grader reads only p1a.cpp, p1b.cpp, p2.cpp, p3.cpp, p4.cpp;Ignored[^\n]*answers.pdf" \
+  -P "$check"
+
+mkdir -p "$work/submission-folder/hw2-main/exercises"
+cp "$repo"/solutions/p1a.cpp "$repo"/solutions/p1b.cpp "$repo"/solutions/p2.cpp "$work/submission-folder/hw2-main/exercises/"
+ln -s "$repo/solutions/p3.cpp" "$work/submission-folder/hw2-main/exercises/p3.cpp"
+printf 'my notes\n' > "$work/submission-folder/README.md"
+grade submission-folder
+cmake -DJSON="$work/submission-folder.json" "-DFULL=1a;1b;2" "-DZERO=3;4" \
+  "-DOUTPUT=found in the folder 'hw2-main/exercises';p3.cpp: [^\n]*symbolic link;p4.cpp is missing;Ignored[^\n]*README.md" \
+  -P "$check"
+
+# No grader: run_autograder still writes a results.json, with a score of 0 and the reason.
+grader="$root/source/opspace/build/release/apps/hw2-grade"
+mv "$grader" "$grader.away"
+grade submission-reference
+mv "$grader.away" "$grader"
+cp "$work/submission-reference.json" "$work/submission-no-grader.json"
+cmake -DJSON="$work/submission-no-grader.json" -DEMPTY=ON "-DOUTPUT=could not grade this submission: the grader[^\n]*is missing" -P "$check"
+echo "the bundle sets up, locks down and grades every kind of submission"

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The student handout from this repository (scripts/handout), and its README's two commands
+# run inside it as a student would: command 1 grades the untouched stubs at 0 of 97, command 2
+# passes every test. CI runs this after scripts/test (.ci/run).
+#   bash tests/deploy/handout.sh REPO WORK
+set -euo pipefail
+repo=$1 work=$2
+rm -rf "$work"
+mkdir -p "$work"
+start=$(date +%s)
+bash "$repo/scripts/handout" "$work/handout"
+cd "$work/handout"
+[ "$(git rev-list --count HEAD)" -eq 1 ] || { echo "the handout is not one commit"; exit 1; }
+[ -z "$(git status --porcelain)" ] || { echo "the handout's work tree is not clean"; exit 1; }
+for gone in solutions tests/mutants tests/tamper docs/instructor.md lib/src/pp_robot.cpp tests/graded/trusted/p1b.cpp; do
+  [ ! -e "$gone" ] || { echo "the handout has $gone"; exit 1; }
+done
+head -5 README.md | grep -qx 'bash scripts/grade    # installs what is missing, builds, grades your exercises/'
+head -6 README.md | grep -qx 'bash scripts/test     # installs what is missing, builds, runs every test (ctest)'
+
+bash scripts/grade > "$work/grade.log" 2>&1 || { tail -40 "$work/grade.log"; echo "README command 1 failed"; exit 1; }
+grep -E '^Total: 0 / 97 points' "$work/grade.log" || { tail -40 "$work/grade.log"; echo "the stubs did not score 0 of 97"; exit 1; }
+echo "handout: README command 1 graded the untouched stubs at 0 ($(( $(date +%s) - start )) s so far)"
+bash scripts/test
+echo "handout: README commands 1 and 2 work ($(( $(date +%s) - start )) s)"

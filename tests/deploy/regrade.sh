@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# scripts/regrade on three students, two at a time: alice (the untouched stubs), bob (the
+# reference, in a subfolder), carol (the reference, but 1a's mass_matrix spins forever). The
+# grader's per-test limit (--timeout 20: forty times the longest reference test, loaded machines
+# too) stops the two
+# tests of 1a that call mass_matrix (ii, 3 points; vi's split, 2 points: the reference's
+# split_displacement calls its own mass_matrix) while alice and bob are graded. The gradebook
+# has alice 0, bob full marks, carol 1a = 23 - 5 = 18 and the rest full. Then carol alone with
+# --limit 6: the watchdog stops her whole grading, and her row and results.json say so.
+#   bash tests/deploy/regrade.sh REPO WORK
+set -euo pipefail
+repo=$1 work=$2
+check="$repo/tests/deploy/check_json.cmake"
+rm -rf "$work"
+mkdir -p "$work/in/alice" "$work/in/bob/hw2" "$work/in/carol" "$work/in2/carol"
+if ! (cd "$repo/exercises" && sha256sum --quiet -c "$repo/tests/graded/stubs.sha256" > /dev/null 2>&1); then
+  echo "SKIPPED: exercises/ have been edited (scripts/regrade grades a missing file as the shipped stub)"
+  exit 0
+fi
+cp "$repo"/exercises/p*.cpp "$work/in/alice/"
+cp "$repo"/solutions/p*.cpp "$work/in/bob/hw2/"
+cp "$repo"/solutions/p*.cpp "$work/in/carol/"
+# A volatile counter: the compiler may not assume the loop ends.
+sed -i 's/^Eigen::Matrix2d mass_matrix(double m1, double m2) {$/&\n  for (volatile unsigned long spin = 0;; spin = spin + 1) {\n  }/' "$work/in/carol/p1a.cpp"
+grep -q 'volatile unsigned long spin' "$work/in/carol/p1a.cpp" || { echo "solutions/p1a.cpp changed: update this test"; exit 1; }
+cp "$work"/in/carol/* "$work/in2/carol/"
+
+start=$(date +%s)
+bash "$repo/scripts/regrade" "$work/in" "$work/out" --jobs 2 -- --timeout 20 2> "$work/regrade.err"
+cat "$work/regrade.err"
+echo "regrade of 3 students: $(( $(date +%s) - start )) s"
+grep -q 'regrade: 3/3 done' "$work/regrade.err" || { echo "no progress line"; exit 1; }
+cat "$work/out/gradebook.csv"
+# Problem maxima (the real suite): 1a 23, 1b 20, 2 18, 3 16, 4 20; total 97.
+grep -qx 'student,1a,1b,2,3,4,total,max,note' "$work/out/gradebook.csv"
+grep -qx 'alice,0,0,0,0,0,0,97,' "$work/out/gradebook.csv"
+grep -qx 'bob,23,20,18,16,20,97,97,' "$work/out/gradebook.csv"
+grep -qx 'carol,18,20,18,16,20,92,97,' "$work/out/gradebook.csv"
+for s in alice bob carol; do
+  [ -s "$work/out/$s/report.txt" ] || { echo "no report for $s"; exit 1; }
+done
+cmake -DJSON="$work/out/bob/results.json" "-DFULL=1a;1b;2;3;4" "-DOUTPUT=found in the folder 'hw2'" -P "$check"
+cmake -DJSON="$work/out/carol/results.json" "-DFULL=1b;2;3;4" -P "$check"
+grep -q 'did not answer within 20 s' "$work/out/carol/report.txt" || { echo "carol's report does not say she hung"; exit 1; }
+
+bash "$repo/scripts/regrade" "$work/in2" "$work/out2" --jobs 1 --limit 6 -- --timeout 30 2> "$work/regrade2.err"
+cat "$work/out2/gradebook.csv"
+grep -q '^carol,,,,,,0,,"not graded: see the report"$' "$work/out2/gradebook.csv"
+grep -q 'grading took more than 6 s and was stopped' "$work/out2/carol/report.txt"
+cmake -DJSON="$work/out2/carol/results.json" -DEMPTY=ON "-DOUTPUT=grading took more than 6 s" -P "$check"
+echo "regrade graded the stub, the reference and the hanging submission without stalling"
