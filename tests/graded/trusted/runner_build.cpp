@@ -141,7 +141,10 @@ std::string first_error(const std::string& output, const std::string& work_file,
     bool in_public_header = false;
     for (const std::string& root : include_roots) in_public_header = in_public_header || line.rfind(root, 0) == 0;
     const bool from_linker = line.find("undefined reference") != std::string::npos;
-    if (!in_student_file && !in_public_header && !from_linker) {
+    // The compiler driver's own errors ("g++: fatal error: ...") quote no file: shown.
+    const bool from_driver = line.find(": fatal error: ") != std::string::npos && line.find(".cpp:") == std::string::npos &&
+                             line.find(".hpp:") == std::string::npos && line.find(".h:") == std::string::npos;
+    if (!in_student_file && !in_public_header && !from_linker && !from_driver) {
       return "a compile error in a file your exercise includes, outside the library's and the system's headers";
     }
     if (from_linker) {
