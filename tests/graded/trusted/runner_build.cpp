@@ -55,7 +55,10 @@ CommandResult run_tool(const std::vector<std::string>& argv, const std::string& 
   spec.limits.cpu_seconds = static_cast<unsigned long long>(settings.timeout);
   spec.limits.file_size = 256ull << 20;
   spec.limits.open_files = 256;
-  spec.limits.processes = 64;
+  // No process limit: RLIMIT_NPROC counts every process of the sandbox user, so a runner's fork
+  // flood in a concurrent grading (regrade --jobs) would make this compiler unable to start
+  // cc1plus. The compiler forks a fixed few processes whatever the file says.
+  spec.limits.processes = 0;
   const int null_in = open("/dev/null", O_RDONLY | O_CLOEXEC);
   spec.fds = {{0, null_in}, {1, out[1]}, {2, out[1]}};
   Sandboxed program;
