@@ -46,18 +46,16 @@ bool cholesky_in_place(Mat& L) {
   return true;
 }
 
-/// Linv = L^-1 for the lower-triangular L, column by column (the strict upper triangle of
-/// Linv is not written: it must hold zeros).
+/// Linv = L^-1 for the lower-triangular L (in its lower triangle; `Linv` holds zeros above), by
+/// forward substitution a row at a time: Linv_i = (e_i - sum_{k<i} L_ik Linv_k) / L_ii. With
+/// Linv stored by rows, each step is a vector operation on a whole row.
 template <typename Factor, typename Inverse>
 void lower_inverse(const Factor& L, Inverse& Linv) {
   const Index n = L.rows();
-  for (Index j = 0; j < n; ++j) {
-    Linv(j, j) = 1.0 / L(j, j);
-    for (Index i = j + 1; i < n; ++i) {
-      double s = 0.0;
-      for (Index k = j; k < i; ++k) s += L(i, k) * Linv(k, j);
-      Linv(i, j) = -s / L(i, i);
-    }
+  for (Index i = 0; i < n; ++i) {
+    Linv(i, i) = 1.0;
+    for (Index k = 0; k < i; ++k) Linv.row(i) -= L(i, k) * Linv.row(k);
+    Linv.row(i) *= 1.0 / L(i, i);
   }
 }
 
@@ -146,7 +144,9 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
   // same Lambda, at several times the cost. Otherwise (near a singularity) the robust path.
   using MxM = Eigen::Matrix<double, M, M, 0, kMaxM, kMaxM>;
   MxM R(m, m);
-  MxM Rinv = MxM::Zero(m, m);
+  // R^-1 kept by rows, so that R^-T R^-1 runs along contiguous rows (and vectorises).
+  using MxMRows = Eigen::Matrix<double, M, M, kRowOrder, kMaxM, kMaxM>;
+  MxMRows Rinv = MxMRows::Zero(m, m);
   R.template triangularView<Eigen::Lower>() = Lambda_inv;
   bool well_conditioned = cholesky_in_place(R);
   if (well_conditioned) {
@@ -160,10 +160,20 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
     invert_robustly(out, tol);
   }
 
-  Jbar.noalias() = X.lazyProduct(Lambda);  // Jbar = A^-1 J^T Lambda
-  Nproj.noalias() = -Jbar.lazyProduct(J);       // N = I - Jbar J
-  Nproj.diagonal().array() += 1.0;
-  p.noalias() = Jbar.transpose().lazyProduct(g);  // p = Jbar^T g
+  // Jbar = A^-1 J^T Lambda, formed as Jbar^T = Lambda (A^-1 J^T)^T (Lambda is symmetric): the
+  // product then runs down Lambda's columns, which vectorises.
+  Eigen::Matrix<double, M, N, 0, kMaxM, kMaxN> JbarT(m, n);
+  JbarT.noalias() = Lambda.lazyProduct(X.transpose());
+  Jbar = JbarT.transpose();
+  // N = I - Jbar J a column at a time, N_j = e_j - sum_a J_aj Jbar_a: whole columns of Jbar,
+  // which vectorise for any joint count (a lazy product of 7 rows did not).
+  for (Index j = 0; j < n; ++j) {
+    auto Nj = Nproj.col(j);
+    Nj.noalias() = -J(0, j) * Jbar.col(0);
+    for (Index a = 1; a < m; ++a) Nj.noalias() -= J(a, j) * Jbar.col(a);
+    Nj(j) += 1.0;
+  }
+  p.noalias() = JbarT.lazyProduct(g);  // p = Jbar^T g
 }
 
 }  // namespace
