@@ -1,6 +1,6 @@
-// Dynamics of every model in robots/ (and the test-only DH PUMA), checked against identities
-// that hold for any rigid-body tree, against the PP robot's closed form, and against the
-// Robotics Toolbox's published PUMA 560 gravity torques.
+// Dynamics of every model in robots/ (and the test-only DH PUMA and tilted-axes tree), checked
+// against identities that hold for any rigid-body tree, against the PP robot's closed form, and
+// against the Robotics Toolbox's published PUMA 560 gravity torques.
 #include <doctest/doctest.h>
 
 #include <string>
