@@ -1,8 +1,9 @@
 // Time of the rigid-body algorithms a control tick calls, on the iiwa (7 joints) and the
 // PUMA (6 joints): forward kinematics, A(q) by CRBA, g(q), both from one kinematics pass
 // (mass_matrix_and_gravity), b(q, qdot) by RNEA, and J0 of the operational point (forward
-// kinematics included). q changes every iteration, as in a control loop.
-// Results: docs/performance.md.
+// kinematics included). q changes every iteration, as in a control loop. The robots and states
+// are bench/robots.hpp's, shared with the peers (bench/peer_*): scripts/bench-peers runs this
+// program and bench_pinocchio in turns and prints the ratios. Results: docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -10,12 +11,13 @@
 #include "opspace/dynamics.hpp"
 #include "opspace/kinematics.hpp"
 #include "opspace/urdf.hpp"
+#include "robots.hpp"
 
 namespace {
 
 using namespace opspace;
 
-/// A robot with its operational point, and a cycle of joint states to step through.
+/// A robot with its operational point, and the cycle of joint states to step through.
 struct Setup {
   Model model;
   Data data;
@@ -23,19 +25,19 @@ struct Setup {
   Eigen::Vector3d point;
   std::vector<Eigen::VectorXd> q, qdot;
 
-  Setup(const std::string& file, const std::string& frame_name, const Eigen::Vector3d& p)
-      : model(load_urdf(robot_path(file))), data(model), frame(model.frame_id(frame_name)), point(p) {
-    for (int k = 0; k < 64; ++k) {
-      q.push_back(Eigen::VectorXd::LinSpaced(model.dof(), -1.0, 1.0) * std::sin(0.1 * k));
-      qdot.push_back(Eigen::VectorXd::LinSpaced(model.dof(), 0.5, -0.5) * std::cos(0.1 * k));
-    }
-  }
+  explicit Setup(const bench::Robot& r)
+      : model(load_urdf(robot_path(r.file))),
+        data(model),
+        frame(model.frame_id(r.frame)),
+        point(r.point),
+        q(bench::positions(model.dof())),
+        qdot(bench::velocities(model.dof())) {}
 };
 
-/// The operational points of problems 2 (iiwa link7 origin) and 1b (PUMA tip).
+/// 0 = iiwa7, 1 = PUMA (bench::kRobots).
 Setup& robot(int which) {
-  static Setup iiwa("iiwa7.urdf", "link7", Eigen::Vector3d::Zero());
-  static Setup puma("puma.urdf", "end-effector", Eigen::Vector3d(-0.2, 0, 0));
+  static Setup iiwa(bench::kRobots[0]);
+  static Setup puma(bench::kRobots[1]);
   return which == 0 ? iiwa : puma;
 }
 

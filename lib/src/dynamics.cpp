@@ -9,20 +9,54 @@ namespace {
 
 using spatial::Vector6d;
 
-/// CRBA on the poses already in data: Ic_i = I_i + sum of its children's Ic, then
-/// A_ji = S_j^T Ic_i S_i for every j on the path from i to the base (and A_ij = A_ji).
-void crba_at_pose(const Model& model, Data& data) {
+/// The torque g_i that holds the subtree of body i, of mass M and first moment H, against
+/// gravity: in RNEA terms the base accelerates by a0 = -gravity, the subtree's force about O is
+/// [M a0; H x a0] and g_i = S_i . [M a0; H x a0].
+double gravity_torque(const Vector6d& S, const SpatialInertia& subtree, const Eigen::Vector3d& a0) {
+  return S.head<3>().dot(subtree.m * a0) + S.tail<3>().dot(subtree.h.cross(a0));
+}
+
+/// CRBA on the poses already in data, in the base frame: Ic_i = I_i + the Ic of its children,
+/// then A_ji = S_j^T Ic_i S_i for every j on the path from i to the base (and A_ij = A_ji).
+/// The inertias are kept as (m, h, I) (SpatialInertia): a sum costs 13 additions, not 36.
+/// With `g`, also g(q) from the same composite inertias (gravity_torque).
+void crba_at_pose(const Model& model, Data& data, Eigen::VectorXd* g) {
   const int n = model.dof();
-  for (int i = 0; i < n; ++i) data.Ic[i] = spatial::body_inertia(model.bodies[i].inertia, data.body_pose[i]);
+  for (int i = 0; i < n; ++i) spatial::body_inertia(model.bodies[i].inertia, data.body_pose[i], data.Ic[i]);
+  const Eigen::Vector3d a0 = -model.gravity;
   data.A.setZero();
   for (int i = n - 1; i >= 0; --i) {  // children have larger indices: Ic[i] is complete here
-    const Vector6d F = data.Ic[i] * data.S[i];
+    const Vector6d F = spatial::apply_inertia(data.Ic[i], data.S[i]);
     data.A(i, i) = data.S[i].dot(F);
     for (int j = model.bodies[i].parent; j >= 0; j = model.bodies[j].parent) {
       data.A(j, i) = data.A(i, j) = data.S[j].dot(F);
     }
+    if (g) (*g)(i) = gravity_torque(data.S[i], data.Ic[i], a0);
     const int parent = model.bodies[i].parent;
-    if (parent >= 0) data.Ic[parent] += data.Ic[i];
+    if (parent >= 0) spatial::add_inertia(data.Ic[parent], data.Ic[i]);
+  }
+}
+
+/// g(q) alone on the poses already in data: only the masses and first moments of the subtrees
+/// (data.Ic's m and h), accumulated exactly as crba_at_pose does, so that both give the same bits.
+void gravity_at_pose(const Model& model, Data& data, Eigen::VectorXd& g) {
+  const int n = model.dof();
+  for (int i = 0; i < n; ++i) {
+    const Inertia& in = model.bodies[i].inertia;
+    const Eigen::Isometry3d& pose = data.body_pose[i];
+    const Eigen::Matrix3d R = pose.linear();
+    const Eigen::Vector3d c = R * in.com + pose.translation();  // as in spatial::body_inertia
+    data.Ic[i].m = in.mass;
+    data.Ic[i].h = in.mass * c;
+  }
+  const Eigen::Vector3d a0 = -model.gravity;
+  for (int i = n - 1; i >= 0; --i) {
+    g(i) = gravity_torque(data.S[i], data.Ic[i], a0);
+    const int parent = model.bodies[i].parent;
+    if (parent >= 0) {
+      data.Ic[parent].m += data.Ic[i].m;
+      data.Ic[parent].h += data.Ic[i].h;
+    }
   }
 }
 
@@ -31,7 +65,7 @@ void crba_at_pose(const Model& model, Data& data) {
 ///             f_i = I_i a_i + v_i xf I_i v_i
 ///   backward: out_i = S_i^T f_i,  f_p += f_i
 /// A null qdot or qdd stands for zero (so no zero vector needs to be allocated). The inertias
-/// are applied without forming them (spatial::apply_inertia).
+/// are applied without forming them (spatial::apply_inertia). (g alone: gravity_at_pose.)
 void rnea_at_pose(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>* qdot,
                   const Eigen::Ref<const Eigen::VectorXd>* qdd, const Eigen::Vector3d& gravity,
                   Eigen::VectorXd& out) {
@@ -43,14 +77,6 @@ void rnea_at_pose(const Model& model, Data& data, const Eigen::Ref<const Eigen::
     const Inertia& inertia = model.bodies[i].inertia;
     const Eigen::Isometry3d& pose = data.body_pose[i];
     const Eigen::Vector3d c = pose * inertia.com;
-    if (!qdot && !qdd) {
-      // Gravity only: v = 0 and a_i = a_base, so f_i = I_i a_base = [m a0; c x m a0].
-      data.v[i].setZero();
-      data.a[i] = a_base;
-      data.f[i].head<3>() = inertia.mass * a_base.head<3>();
-      data.f[i].tail<3>() = c.cross(data.f[i].head<3>());
-      continue;
-    }
     const Vector6d vJ = qdot ? Vector6d(data.S[i] * (*qdot)(i)) : Vector6d::Zero();
     data.v[i] = parent < 0 ? vJ : Vector6d(data.v[parent] + vJ);
     data.a[i] = (parent < 0 ? a_base : data.a[parent]) + spatial::cross_motion(data.v[i], vJ);
@@ -70,21 +96,20 @@ void rnea_at_pose(const Model& model, Data& data, const Eigen::Ref<const Eigen::
 
 const Eigen::MatrixXd& crba(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q) {
   forward_kinematics(model, data, q);
-  crba_at_pose(model, data);
+  crba_at_pose(model, data, nullptr);
   return data.A;
 }
 
 const Eigen::VectorXd& generalized_gravity(const Model& model, Data& data,
                                            const Eigen::Ref<const Eigen::VectorXd>& q) {
   forward_kinematics(model, data, q);
-  rnea_at_pose(model, data, nullptr, nullptr, model.gravity, data.g);
+  gravity_at_pose(model, data, data.g);
   return data.g;
 }
 
 void mass_matrix_and_gravity(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q) {
   forward_kinematics(model, data, q);
-  crba_at_pose(model, data);
-  rnea_at_pose(model, data, nullptr, nullptr, model.gravity, data.g);
+  crba_at_pose(model, data, &data.g);
 }
 
 const Eigen::VectorXd& coriolis_centrifugal(const Model& model, Data& data,
@@ -113,7 +138,7 @@ const Eigen::VectorXd& forward_dynamics(const Model& model, Data& data,
   model.check_joint_vector(qdot, "forward_dynamics: qdot");
   model.check_joint_vector(tau, "forward_dynamics: tau");
   forward_kinematics(model, data, q);
-  crba_at_pose(model, data);
+  crba_at_pose(model, data, nullptr);
   // qdd = A^-1 (tau - (b + g)), with b + g = RNEA(q, qdot, 0) computed into qdd itself.
   rnea_at_pose(model, data, &qdot, nullptr, model.gravity, data.qdd);
   data.qdd = tau - data.qdd;

@@ -21,42 +21,51 @@ void check_frame(const Model& model, int frame) {
 
 void forward_kinematics(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q) {
   model.check_joint_vector(q, "forward_kinematics: q");
-  // oMi = oMparent * parentMjoint * jointMi(q_i); S_i from the new pose. Rotation and
-  // translation are composed separately: Eigen multiplies two Isometry3d as 4x4 matrices,
-  // which made forward kinematics a quarter of a control tick (callgrind, docs/performance.md).
+  // oMi = oMparent * parentMjoint * jointMi(q_i), rotation and translation composed separately
+  // (Eigen multiplies two Isometry3d as 4x4 matrices); then S_i from the new pose.
   for (int i = 0; i < model.dof(); ++i) {
     const Body& body = model.bodies[i];
     const Eigen::Isometry3d& placement = body.joint_placement;
-    Eigen::Matrix3d R = placement.linear();
-    Eigen::Vector3d t = placement.translation();
-    if (body.type == JointType::kRevolute) {
-      R = placement.linear() * Eigen::AngleAxisd(q(i), body.axis).toRotationMatrix();
-    } else {
-      t += placement.linear() * (q(i) * body.axis);
-    }
-    Eigen::Isometry3d& pose = data.body_pose[i];
+    Eigen::Matrix3d R;
+    Eigen::Vector3d t;
     if (body.parent < 0) {
-      pose.linear() = R;
-      pose.translation() = t;
+      R = placement.linear();
+      t = placement.translation();
     } else {
       const Eigen::Isometry3d& parent = data.body_pose[body.parent];
-      pose.translation() = parent.translation() + parent.linear() * t;
-      pose.linear() = parent.linear() * R;
+      R.noalias() = parent.linear() * placement.linear();
+      t.noalias() = parent.translation() + parent.linear() * placement.translation();
     }
-    pose.makeAffine();
-    data.S[i] = spatial::motion_subspace(body, pose);
+    if (body.type == JointType::kRevolute) {
+      spatial::rotate_about_axis(R, body.axis, q(i));  // R * Rot(axis, q_i)
+    } else {
+      t.noalias() += R * (q(i) * body.axis);
+    }
+    Eigen::Isometry3d& pose = data.body_pose[i];
+    pose.linear() = R;
+    pose.translation() = t;
+    data.S[i] = spatial::motion_subspace(body, R, t);
   }
 }
 
 Eigen::Isometry3d frame_pose(const Model& model, const Data& data, int frame) {
   check_frame(model, frame);
   const Frame& f = model.frames[frame];
-  return f.body < 0 ? f.placement : data.body_pose[f.body] * f.placement;
+  if (f.body < 0) return f.placement;
+  // oMf = oMb * bMf, composed as rotation and translation (not as a 4x4 product).
+  const Eigen::Isometry3d& body = data.body_pose[f.body];
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear().noalias() = body.linear() * f.placement.linear();
+  pose.translation() = body.translation() + body.linear() * f.placement.translation();
+  return pose;
 }
 
 Eigen::Vector3d point_position(const Model& model, const Data& data, int frame,
                                const Eigen::Vector3d& p) {
-  return frame_pose(model, data, frame) * p;
+  check_frame(model, frame);
+  const Frame& f = model.frames[frame];
+  const Eigen::Vector3d in_body = f.placement * p;  // x = oMb (bMf p)
+  return f.body < 0 ? in_body : data.body_pose[f.body] * in_body;
 }
 
 void point_jacobian(const Model& model, const Data& data, int frame, const Eigen::Vector3d& p,

@@ -49,6 +49,6 @@ Data::Data(const Model& model)
       a(model.bodies.size(), Eigen::Matrix<double, 6, 1>::Zero()),
       f(model.bodies.size(), Eigen::Matrix<double, 6, 1>::Zero()),
       S(model.bodies.size(), Eigen::Matrix<double, 6, 1>::Zero()),
-      Ic(model.bodies.size(), Eigen::Matrix<double, 6, 6>::Zero()) {}
+      Ic(model.bodies.size()) {}
 
 }  // namespace opspace

@@ -46,18 +46,16 @@ bool cholesky_in_place(Mat& L) {
   return true;
 }
 
-/// Linv = L^-1 for the lower-triangular L, column by column (the strict upper triangle of
-/// Linv is not written: it must hold zeros).
+/// Linv = L^-1 for the lower-triangular L (in its lower triangle; `Linv` holds zeros above), by
+/// forward substitution a row at a time: Linv_i = (e_i - sum_{k<i} L_ik Linv_k) / L_ii. With
+/// Linv stored by rows, each step is a vector operation on a whole row.
 template <typename Factor, typename Inverse>
 void lower_inverse(const Factor& L, Inverse& Linv) {
   const Index n = L.rows();
-  for (Index j = 0; j < n; ++j) {
-    Linv(j, j) = 1.0 / L(j, j);
-    for (Index i = j + 1; i < n; ++i) {
-      double s = 0.0;
-      for (Index k = j; k < i; ++k) s += L(i, k) * Linv(k, j);
-      Linv(i, j) = -s / L(i, i);
-    }
+  for (Index i = 0; i < n; ++i) {
+    Linv(i, i) = 1.0;
+    for (Index k = 0; k < i; ++k) Linv.row(i) -= L(i, k) * Linv.row(k);
+    Linv.row(i) *= 1.0 / L(i, i);
   }
 }
 
@@ -100,7 +98,9 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
                              const Eigen::Ref<const Eigen::VectorXd>& g_in, TaskSpace& out, double tol) {
   constexpr int kMaxN = N == Eigen::Dynamic ? kMaxDof : N;
   constexpr int kMaxM = M == Eigen::Dynamic ? kMaxTaskDim : M;
-  const Index m = out.Lambda.rows(), n = out.N.rows();
+  // Compile-time sizes where known: the loops of the factorisations then unroll.
+  const Index m = M == Eigen::Dynamic ? out.Lambda.rows() : M;
+  const Index n = N == Eigen::Dynamic ? out.N.rows() : N;
   const auto A = view<N, N>(A_in);
   const auto J = view<M, N>(J_in);
   const auto g = view<N, 1>(g_in);
@@ -112,17 +112,30 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
   auto p = view_mut<M, 1>(out.p);
 
   // A = L L^T;  W = L^-1 J^T;  Lambda^-1 = J A^-1 J^T = W^T W;  A^-1 J^T = L^-T W.
-  // With the triangular inverse formed, every step is a small product, which vectorises.
   using NxN = Eigen::Matrix<double, N, N, 0, kMaxN, kMaxN>;
   NxN L(n, n);
-  NxN Linv = NxN::Zero(n, n);
   L.template triangularView<Eigen::Lower>() = A;
   if (!cholesky_in_place(L)) throw std::invalid_argument("operational_space: A is not positive definite");
-  lower_inverse(L, Linv);
-  Eigen::Matrix<double, N, M, 0, kMaxN, kMaxM> W(n, m);
-  W.noalias() = Linv.lazyProduct(J.transpose());
+  // The two triangular solves run by substitution a row at a time: each step is an operation
+  // on a whole row of m task columns, which vectorises, and half of L^-1's products (its
+  // zeros) are never made.  Forward:  W_i = (J^T_i - sum_{k<i} L_ik W_k) / L_ii.
+  constexpr int kRowOrder = M == 1 ? Eigen::ColMajor : Eigen::RowMajor;
+  using NxMRows = Eigen::Matrix<double, N, M, kRowOrder, kMaxN, kMaxM>;
+  NxMRows W(n, m);
+  for (Index i = 0; i < n; ++i) {
+    W.row(i) = J.col(i).transpose();
+    for (Index k = 0; k < i; ++k) W.row(i) -= L(i, k) * W.row(k);
+    W.row(i) *= 1.0 / L(i, i);
+  }
   Lambda_inv.noalias() = W.transpose().lazyProduct(W);
-  Ainv_Jt.noalias() = Linv.transpose().lazyProduct(W);
+  // Backward:  (A^-1 J^T)_i = (W_i - sum_{k>i} L_ki (A^-1 J^T)_k) / L_ii.
+  NxMRows X(n, m);
+  for (Index i = n - 1; i >= 0; --i) {
+    X.row(i) = W.row(i);
+    for (Index k = i + 1; k < n; ++k) X.row(i) -= L(k, i) * X.row(k);
+    X.row(i) *= 1.0 / L(i, i);
+  }
+  Ainv_Jt = X;
 
   // Fast path: Lambda = R^-T R^-1 with R = chol(Lambda^-1), kept only when no eigenvalue of
   // Lambda^-1 can fall below tol * mu_max. Since mu_max <= |Lambda^-1|_F and
@@ -131,7 +144,9 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
   // same Lambda, at several times the cost. Otherwise (near a singularity) the robust path.
   using MxM = Eigen::Matrix<double, M, M, 0, kMaxM, kMaxM>;
   MxM R(m, m);
-  MxM Rinv = MxM::Zero(m, m);
+  // R^-1 kept by rows, so that R^-T R^-1 runs along contiguous rows (and vectorises).
+  using MxMRows = Eigen::Matrix<double, M, M, kRowOrder, kMaxM, kMaxM>;
+  MxMRows Rinv = MxMRows::Zero(m, m);
   R.template triangularView<Eigen::Lower>() = Lambda_inv;
   bool well_conditioned = cholesky_in_place(R);
   if (well_conditioned) {
@@ -145,10 +160,20 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
     invert_robustly(out, tol);
   }
 
-  Jbar.noalias() = Ainv_Jt.lazyProduct(Lambda);  // Jbar = A^-1 J^T Lambda
-  Nproj.noalias() = -Jbar.lazyProduct(J);       // N = I - Jbar J
-  Nproj.diagonal().array() += 1.0;
-  p.noalias() = Jbar.transpose().lazyProduct(g);  // p = Jbar^T g
+  // Jbar = A^-1 J^T Lambda, formed as Jbar^T = Lambda (A^-1 J^T)^T (Lambda is symmetric): the
+  // product then runs down Lambda's columns, which vectorises.
+  Eigen::Matrix<double, M, N, 0, kMaxM, kMaxN> JbarT(m, n);
+  JbarT.noalias() = Lambda.lazyProduct(X.transpose());
+  Jbar = JbarT.transpose();
+  // N = I - Jbar J a column at a time, N_j = e_j - sum_a J_aj Jbar_a: whole columns of Jbar,
+  // which vectorise for any joint count (a lazy product of 7 rows did not).
+  for (Index j = 0; j < n; ++j) {
+    auto Nj = Nproj.col(j);
+    Nj.noalias() = -J(0, j) * Jbar.col(0);
+    for (Index a = 1; a < m; ++a) Nj.noalias() -= J(a, j) * Jbar.col(a);
+    Nj(j) += 1.0;
+  }
+  p.noalias() = JbarT.lazyProduct(g);  // p = Jbar^T g
 }
 
 }  // namespace

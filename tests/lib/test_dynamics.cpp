@@ -1,6 +1,6 @@
-// Dynamics of every model in robots/ (and the test-only DH PUMA), checked against identities
-// that hold for any rigid-body tree, against the PP robot's closed form, and against the
-// Robotics Toolbox's published PUMA 560 gravity torques.
+// Dynamics of every model in robots/ (and the test-only DH PUMA and tilted-axes tree), checked
+// against identities that hold for any rigid-body tree, against the PP robot's closed form, and
+// against the Robotics Toolbox's published PUMA 560 gravity torques.
 #include <doctest/doctest.h>
 
 #include <string>
@@ -23,7 +23,8 @@ constexpr int kTrials = 25;
 
 std::vector<std::string> all_models() {
   return {robot_path("pp.urdf"), robot_path("puma.urdf"), robot_path("iiwa7.urdf"),
-          robot_path("rrr.urdf"), std::string(OPSPACE_TEST_DATA_DIR) + "/puma_dh.urdf"};
+          robot_path("rrr.urdf"), std::string(OPSPACE_TEST_DATA_DIR) + "/puma_dh.urdf",
+          std::string(OPSPACE_TEST_DATA_DIR) + "/tilted_axes.urdf"};  // tilted axes, a branch
 }
 
 Eigen::VectorXd random_q(const Model& model, Random& rng) {

@@ -81,6 +81,16 @@ struct Model {
   void check_joint_vector(const Eigen::Ref<const Eigen::VectorXd>& v, const char* what) const;
 };
 
+/// A spatial inertia about the base origin O, in the base frame, by its ten numbers: mass m,
+/// first moment h = m c (c: centre of mass) and rotational inertia I about O. It stands for the
+/// 6x6 matrix [[m 1, -[h]], [[h], I]], which is never formed; the inertia of several bodies is
+/// the sum of each of the three.
+struct SpatialInertia {
+  double m = 0.0;                                 ///< mass (kg)
+  Eigen::Vector3d h = Eigen::Vector3d::Zero();    ///< first moment m c (kg m)
+  Eigen::Matrix3d I = Eigen::Matrix3d::Zero();    ///< rotational inertia about O (kg m^2)
+};
+
 /// Workspace of the algorithms: sized once from a Model, then reused without allocation.
 struct Data {
   /// Sizes every member for `model`: the only allocation of the algorithms.
@@ -100,7 +110,7 @@ struct Data {
   std::vector<Eigen::Matrix<double, 6, 1>> a;  ///< spatial acceleration (rnea: offset by -gravity)
   std::vector<Eigen::Matrix<double, 6, 1>> f;  ///< spatial force [f; n_O] (N, N m) across the joint (rnea)
   std::vector<Eigen::Matrix<double, 6, 1>> S;  ///< joint motion subspace: spatial velocity per unit qdot
-  std::vector<Eigen::Matrix<double, 6, 6>> Ic; ///< composite spatial inertia of the body's subtree (crba)
+  std::vector<SpatialInertia> Ic;  ///< composite inertia of the body's subtree (crba, generalized_gravity)
 };
 
 }  // namespace opspace
