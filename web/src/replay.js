@@ -8,6 +8,7 @@
 // faded copies of the robot spread over the run (a stroboscopic picture); speed=X.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { baseScene, buildRobot, el, setPose } from './scene.js';
 
 const api = { ready: false, frames: 0 };
 window.opspaceReplay = api;
@@ -28,13 +29,6 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 14px system-ui, sa
 #no-webgl { padding: 2em; }
 `;
 
-function el(tag, attrs = {}, text = '') {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
-  if (text) e.textContent = text;
-  return e;
-}
-
 function hashOptions() {
   const options = {};
   for (const part of window.location.hash.replace(/^#/, '').split('&')) {
@@ -42,41 +36,6 @@ function hashOptions() {
     if (k) options[k] = v === undefined ? true : v;
   }
   return options;
-}
-
-function geometryOf(shape) {
-  if (shape.kind === 'box') return new THREE.BoxGeometry(...shape.size);
-  if (shape.kind === 'sphere') return new THREE.SphereGeometry(shape.radius, 24, 16);
-  // URDF cylinders lie along their local z, three.js cylinders along y.
-  const g = new THREE.CylinderGeometry(shape.radius, shape.radius, shape.length, 32);
-  g.rotateX(Math.PI / 2);
-  return g;
-}
-
-function setPose(object, pose, offset = 0) {
-  object.position.set(pose[offset], pose[offset + 1], pose[offset + 2]);
-  object.quaternion.set(pose[offset + 3], pose[offset + 4], pose[offset + 5], pose[offset + 6]);
-}
-
-/// One copy of the robot: a group per body holding its shapes.
-function buildRobot(data, opacity) {
-  const root = new THREE.Group();
-  const bodies = [];
-  for (let i = 0; i < data.bodies; ++i) {
-    const g = new THREE.Group();
-    root.add(g);
-    bodies.push(g);
-  }
-  for (const shape of data.shapes) {
-    const material = new THREE.MeshStandardMaterial({
-      color: shape.color, roughness: 0.55, metalness: 0.1,
-      transparent: opacity < 1, opacity, depthWrite: opacity >= 1,
-    });
-    const mesh = new THREE.Mesh(geometryOf(shape), material);
-    setPose(mesh, shape.placement);
-    (shape.body < 0 ? root : bodies[shape.body]).add(mesh);
-  }
-  return { root, bodies };
 }
 
 function poseRobot(robot, data, frame) {
@@ -190,16 +149,7 @@ function main() {
   renderer.setPixelRatio(window.devicePixelRatio);
   stage.append(renderer.domElement);
 
-  const scene = new THREE.Scene();
-  scene.background = new THREE.Color(0xf4f5f7);
-  scene.add(new THREE.HemisphereLight(0xffffff, 0x8890a0, 1.6));
-  const sun = new THREE.DirectionalLight(0xffffff, 1.8);
-  sun.position.set(2, -3, 4);
-  scene.add(sun);
-  const grid = new THREE.GridHelper(4, 40, 0xb0b4bc, 0xd6d8de);
-  grid.rotation.x = Math.PI / 2;  // the URDF world is z-up
-  scene.add(grid);
-  scene.add(new THREE.AxesHelper(0.2));
+  const scene = baseScene();
 
   const robot = buildRobot(data, 1);
   scene.add(robot.root);

@@ -1,0 +1,227 @@
+#include "explore.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "opspace/dynamics.hpp"
+#include "opspace/kinematics.hpp"
+#include "opspace/linalg.hpp"
+
+namespace opspace::explore {
+
+namespace {
+
+using Matrix3Xd = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+
+/// Jv of the tip at the configuration of the last forward_kinematics.
+Matrix3Xd linear_jacobian(const Model& model, const Data& data, const Tip& tip) {
+  Matrix6Xd J0(6, model.dof());
+  point_jacobian(model, data, tip.frame, tip.point, J0);
+  return J0.topRows<3>();
+}
+
+/// J+ or Jbar of Jv at q (runs forward_kinematics and, for Jbar, crba).
+Eigen::MatrixXd right_inverse(const Model& model, Data& data, const Tip& tip,
+                              const Eigen::Ref<const Eigen::VectorXd>& q, Inverse inverse, Matrix3Xd& Jv) {
+  forward_kinematics(model, data, q);
+  Jv = linear_jacobian(model, data, tip);
+  if (inverse == Inverse::kPseudoInverse) return pseudo_inverse(Jv);
+  return dynamically_consistent_inverse(Jv, crba(model, data, q));
+}
+
+int steps_for(double s) { return std::max(1, static_cast<int>(std::ceil(std::abs(s) / kStep))); }
+
+}  // namespace
+
+TipView view(const Model& model, Data& data, const Tip& tip, const Eigen::Ref<const Eigen::VectorXd>& q) {
+  model.check_joint_vector(q, "explore::view: q");
+  TipView v;
+  v.singularities = analyse_singularities(model, data, tip.frame, tip.point, q);  // runs forward kinematics
+  v.x = point_position(model, data, tip.frame, tip.point);
+  v.Jv = linear_jacobian(model, data, tip);
+  v.velocity_axes = v.singularities.linear.U;
+  v.velocity_radii = v.singularities.linear.sigma;
+  // Lambda_v^-1 = Jv A^-1 Jv^T, through the Cholesky factor of A: no inverse of A is formed.
+  const Eigen::MatrixXd& A = crba(model, data, q);
+  const Matrix3Xd AinvJt = A.llt().solve(v.Jv.transpose()).transpose();
+  const Eigen::Matrix3d Lambda_inv = v.Jv * AinvJt.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(Lambda_inv);
+  const double largest = eig.eigenvalues().maxCoeff();
+  for (int i = 0; i < 3; ++i) {  // eigenvalues increase: radii decrease
+    const double mu = eig.eigenvalues()(i);
+    v.mass_radii(i) = mu > kSingularValueTolerance * largest ? 1.0 / std::sqrt(mu)
+                                                              : std::numeric_limits<double>::infinity();
+  }
+  v.mass_axes = eig.eigenvectors();
+  return v;
+}
+
+Eigen::VectorXd tip_motion(const Model& model, Data& data, const Tip& tip,
+                           const Eigen::Ref<const Eigen::VectorXd>& q0, const Eigen::Vector3d& u, double s,
+                           Inverse inverse) {
+  model.check_joint_vector(q0, "explore::tip_motion: q");
+  forward_kinematics(model, data, q0);
+  const Eigen::Vector3d x0 = point_position(model, data, tip.frame, tip.point);
+  const int n = steps_for(s);
+  Eigen::VectorXd q = q0;
+  Matrix3Xd Jv;
+  for (int k = 1; k <= n; ++k) {
+    // q <- q + J_inv (x_d(s_k) - x(q)): the step along u and the correction of the last one's drift.
+    const Eigen::MatrixXd J_inv = right_inverse(model, data, tip, q, inverse, Jv);
+    const Eigen::Vector3d x_d = x0 + (s * k / n) * u;
+    q += J_inv * (x_d - point_position(model, data, tip.frame, tip.point));
+  }
+  return q;
+}
+
+Eigen::VectorXd self_motion(const Model& model, Data& data, const Tip& tip,
+                            const Eigen::Ref<const Eigen::VectorXd>& q0, int j, double s, Inverse inverse) {
+  model.check_joint_vector(q0, "explore::self_motion: q");
+  if (j < 0 || j >= model.dof()) {
+    throw std::invalid_argument("explore::self_motion: joint index " + std::to_string(j) + " is not in [0, " +
+                                std::to_string(model.dof()) + ") for model '" + model.name + "'");
+  }
+  forward_kinematics(model, data, q0);
+  const Eigen::Vector3d x0 = point_position(model, data, tip.frame, tip.point);
+  const int n = steps_for(s);
+  Eigen::VectorXd q = q0;
+  Matrix3Xd Jv;
+  for (int k = 1; k <= n; ++k) {
+    // q <- q + (I - J_inv Jv) e_j h, then J_inv (x0 - x(q)) takes back the second-order drift.
+    Eigen::MatrixXd J_inv = right_inverse(model, data, tip, q, inverse, Jv);
+    q += (s / n) * (Eigen::VectorXd::Unit(model.dof(), j) - J_inv * Jv.col(j));
+    J_inv = right_inverse(model, data, tip, q, inverse, Jv);
+    q += J_inv * (x0 - point_position(model, data, tip.frame, tip.point));
+  }
+  return q;
+}
+
+// ---- JSON for the page ----
+
+namespace {
+
+class Json {
+ public:
+  Json& raw(const char* s) {
+    out_ += s;
+    return *this;
+  }
+  Json& key(const char* k) {
+    comma();
+    out_ += '"';
+    out_ += k;
+    out_ += "\":";
+    fresh_ = true;
+    return *this;
+  }
+  Json& num(double v) {
+    comma();
+    if (std::isfinite(v)) {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.17g", v);
+      out_ += buffer;
+    } else {
+      out_ += "null";  // JSON has no infinity: the page reads null as an unbounded radius
+    }
+    return *this;
+  }
+  Json& open(char c) {
+    comma();
+    out_ += c;
+    fresh_ = true;
+    return *this;
+  }
+  Json& close(char c) {
+    out_ += c;
+    fresh_ = false;
+    return *this;
+  }
+  /// A matrix as an array of its columns (the page reads directions as columns).
+  Json& columns(const Eigen::Ref<const Eigen::MatrixXd>& M) {
+    open('[');
+    for (Eigen::Index c = 0; c < M.cols(); ++c) {
+      open('[');
+      for (Eigen::Index r = 0; r < M.rows(); ++r) num(M(r, c));
+      close(']');
+    }
+    return close(']');
+  }
+  Json& vector(const Eigen::Ref<const Eigen::VectorXd>& v) {
+    open('[');
+    for (Eigen::Index i = 0; i < v.size(); ++i) num(v(i));
+    return close(']');
+  }
+  std::string text() const { return out_; }
+
+ private:
+  void comma() {
+    if (!fresh_) out_ += ',';
+    fresh_ = false;
+  }
+  std::string out_;
+  bool fresh_ = true;
+};
+
+/// Body poses [px, py, pz, qx, qy, qz, qw], one array per body, at the last forward kinematics.
+void poses(Json& j, const Data& data) {
+  j.open('[');
+  for (const Eigen::Isometry3d& X : data.body_pose) {
+    const Eigen::Quaterniond r(X.rotation());
+    j.open('[').num(X.translation().x()).num(X.translation().y()).num(X.translation().z());
+    j.num(r.x()).num(r.y()).num(r.z()).num(r.w()).close(']');
+  }
+  j.close(']');
+}
+
+void moved(Json& j, const Model& model, Data& data, const Tip& tip, const Request& r, Inverse inverse) {
+  Eigen::VectorXd q = self_motion(model, data, tip, r.q, r.self_joint, r.self_s, inverse);
+  q = tip_motion(model, data, tip, q, r.u, r.tip_s, inverse);
+  forward_kinematics(model, data, q);
+  j.open('{').key("q").vector(q).key("tip").vector(point_position(model, data, tip.frame, tip.point));
+  j.key("poses");
+  poses(j, data);
+  j.close('}');
+}
+
+}  // namespace
+
+std::string view_json(const Model& model, Data& data, const Tip& tip, const Request& request) {
+  require_finite(request.q, "explorer request q");
+  require_finite(request.u, "explorer request u");
+  if (!std::isfinite(request.tip_s) || !std::isfinite(request.self_s)) {
+    throw std::invalid_argument("explorer request: the motion sliders hold a NaN or an infinity");
+  }
+  if (request.u.norm() == 0.0) throw std::invalid_argument("explorer request: the tip-motion direction is zero");
+  Request r = request;
+  r.u.normalize();
+  const TipView v = view(model, data, tip, r.q);
+  Json j;
+  j.open('{').key("x").vector(v.x).key("Jv").columns(v.Jv);
+  j.key("velocity").open('{').key("axes").columns(v.velocity_axes).key("radii").vector(v.velocity_radii).close('}');
+  j.key("mass").open('{').key("axes").columns(v.mass_axes).key("radii").vector(v.mass_radii).close('}');
+  const SingularityAnalysis& s = v.singularities;
+  j.key("rank").num(s.linear.rank).key("type_one").num(s.type_one);
+  j.key("singular").open('[');
+  for (int i = 0; i < 3 - s.linear.rank; ++i) {
+    j.open('{').key("u").vector(s.linear.singular().col(i));
+    j.key("type").num(static_cast<int>(s.type(i))).close('}');
+  }
+  j.close(']');
+  j.key("angular_sigma").vector(s.angular.sigma);
+  forward_kinematics(model, data, r.q);
+  j.key("poses");
+  poses(j, data);
+  j.key("pseudo_inverse");
+  moved(j, model, data, tip, r, Inverse::kPseudoInverse);
+  j.key("dynamically_consistent");
+  moved(j, model, data, tip, r, Inverse::kDynamicallyConsistent);
+  j.close('}');
+  return j.text();
+}
+
+}  // namespace opspace::explore
