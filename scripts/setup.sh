@@ -13,9 +13,11 @@ OPSPACE_PACKAGES=(g++ make cmake pkg-config libeigen3-dev doctest-dev libbullet-
 # Optional: if they cannot be installed, the build, the grader and the programs still work and
 # say which picture they skipped.
 OPSPACE_OPTIONAL_PACKAGES=(gnuplot-nox fonts-dejavu-core ca-certificates)
-# Only the tests need a browser: Chromium runs the replay test (scripts/test installs it; a
-# student's scripts/grade does not download it). Optional too: without it that test is skipped.
-OPSPACE_TEST_PACKAGES=(chromium)
+# Only the tests need a browser: Chromium runs the replay and explorer tests (scripts/test
+# installs it; a student's scripts/grade does not download it). Emscripten (em++) compiles the
+# library to WebAssembly for the explorer page (docs/visuals.md). Optional too: without them
+# those tests are skipped.
+OPSPACE_TEST_PACKAGES=(chromium emscripten)
 # A node/npm already on the machine (for example from NodeSource) is kept: Debian's npm
 # package would conflict with it.
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then

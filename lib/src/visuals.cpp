@@ -1,10 +1,17 @@
 #include "opspace/visuals.hpp"
 
 #include <exception>
+#include <filesystem>
 #include <ostream>
 #include <string>
 
+#ifndef OPSPACE_EXPLORER_PAGE
+#define OPSPACE_EXPLORER_PAGE ""
+#endif
+
 namespace opspace::visuals {
+
+namespace fs = std::filesystem;
 
 std::string prefix_of(const std::string& csv_path) {
   const std::string ext = ".csv";
@@ -51,6 +58,9 @@ Published publish(const std::vector<plot::Figure>& figures, const replay::Scene*
       const replay::Output page = replay::write(*scene, prefix + "-replay.html");
       result.page = page.page;
       if (!page.page.empty()) out << "replay: " << page.page << "\n";
+      // The explorer (docs/visuals.md): the same robots, live, where this build wrote it.
+      std::error_code ec;
+      if (!page.page.empty() && *OPSPACE_EXPLORER_PAGE && fs::exists(OPSPACE_EXPLORER_PAGE, ec)) out << "explorer: " << OPSPACE_EXPLORER_PAGE << "\n";
       if (!page.skipped.empty()) result.skipped.push_back(page.skipped);
     } catch (const std::exception& e) {
       result.skipped.push_back(std::string("no 3D replay: ") + e.what());

@@ -11,6 +11,10 @@
 #                               runs PROGRAM ARG... in WORKDIR; the one page it prints on its
 #                               'replay:' line must pass CHECK_SCRIPT (web/test/check_replay.mjs)
 #                               in headless Chromium, the robot covering > MIN_ROBOT_SHARE of it
+#   check_visuals.sh explorer   PROGRAM WORKDIR NODE CHECK_SCRIPT EXPLORER ARTEFACTS ARG...
+#                               runs PROGRAM ARG...; the page on its 'explorer:' line must pass
+#                               CHECK_SCRIPT (web/test/check_explorer.mjs), which compares its
+#                               numbers with the native EXPLORER's and keeps screenshots in ARTEFACTS
 #   check_visuals.sh judged     PROGRAM WORKDIR ARG...  a reference (-sol) run at its default
 #                               duration: every row of its table ok, and this run's value equal
 #                               to the reference column (computed at build time)
@@ -137,6 +141,23 @@ case "$mode" in
     [ $status -eq 77 ] && skip "Chromium could not be started"
     [ $status -eq 0 ] || fail "the replay page failed in headless Chromium"
     [ -s "$screenshot" ] || fail "no screenshot"
+    ;;
+  explorer)
+    [ $# -ge 7 ] || fail "explorer needs NODE CHECK_SCRIPT EXPLORER ARTEFACTS and the program's arguments"
+    node=$4 check=$5 explorer=$6 artefacts=$7
+    shift 7
+    [ -x "$node" ] || skip "node is not installed: the explorer's viewer cannot be bundled or checked"
+    [ -x "${CHROMIUM:-/usr/bin/chromium}" ] || skip "Chromium is not installed (apt-get install chromium)"
+    run "$program $*" "$@" --no-plots
+    mapfile -t pages < <(sed -n 's/^explorer: *//p' "$work/out.txt")
+    [ ${#pages[@]} -gt 0 ] || skip "no 'explorer:' line: the page was not built (it needs em++, Debian's emscripten, and the viewer bundle: see the build's messages)"
+    [ ${#pages[@]} -eq 1 ] || fail "expected one 'explorer:' line, got ${#pages[@]}: ${pages[*]}"
+    [ -s "${pages[0]}" ] || fail "${pages[0]} was printed but is missing or empty"
+    [ -f "$check" ] || skip "$check is missing: the viewer's npm packages were not installed"
+    "$node" "$check" "${pages[0]}" "$explorer" "$artefacts"
+    status=$?
+    [ $status -eq 77 ] && skip "Chromium could not be started"
+    [ $status -eq 0 ] || fail "the explorer page failed in headless Chromium"
     ;;
   judged)
     shift 3
