@@ -9,7 +9,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { baseScene, buildRobot, el, setPose } from './scene.js';
 
 // The test hook (web/test/check_explorer.mjs).
-const api = { ready: false, redrawMs: [] };
+const api = { ready: false, redrawMs: [], computeMs: [], waitForGpu: false };
 window.opspaceExplorer = api;
 
 const TYPE_COLORS = { 1: '#e67e22', 2: '#8e44ad' };  // Type I orange, Type II purple
@@ -28,8 +28,8 @@ html, body { margin: 0; height: 100%; font: 13px system-ui, sans-serif; color: #
 #numbers { overflow-x: auto; font: 11px ui-monospace, monospace; white-space: pre; background: #f4f5f7; padding: 6px; border-radius: 4px; }
 .swatch { display: inline-block; width: 10px; height: 10px; margin-right: 6px; border-radius: 2px; }
 #views { position: absolute; left: 370px; right: 0; top: 0; bottom: 0; display: grid; grid-template-rows: 3fr 2fr; grid-template-columns: 1fr 1fr; }
-.view { position: relative; border: 1px solid #d6d8de; overflow: hidden; }
-.view canvas { width: 100%; height: 100%; display: block; }
+#canvas { position: absolute; left: 0; top: 0; width: 100%; height: 100%; display: block; }
+.view { position: relative; border: 1px solid #d6d8de; overflow: hidden; touch-action: none; }
 .view .label { position: absolute; left: 8px; top: 6px; background: rgba(255,255,255,0.85); padding: 3px 6px; border-radius: 4px; max-width: 90%; }
 #main { grid-column: 1 / 3; }
 `;
@@ -66,30 +66,48 @@ function placeEllipsoid(mesh, axes, radii, scale, clip) {
   mesh.scale.set(r[0], r[1], r[2]);
 }
 
-/// A view: renderer, camera looking at the robot, controls.
-function makeView(container, labelHtml) {
+/// One WebGL canvas behind the three view boxes (one context, one frame to wait for); each view
+/// draws its scene into its box's rectangle.
+function makeRenderer(views) {
+  const renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(window.devicePixelRatio);
+  renderer.setScissorTest(true);
+  renderer.domElement.id = 'canvas';
+  views.prepend(renderer.domElement);
+  return renderer;
+}
+
+/// A view: its box (which takes the mouse), camera looking at the robot, controls.
+function makeView(renderer, box, labelHtml) {
   const label = el('div', { class: 'label' });
   label.innerHTML = labelHtml;
-  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-  renderer.setPixelRatio(window.devicePixelRatio);
-  container.append(renderer.domElement, label);
+  box.append(label);
   const scene = baseScene();
   const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 100);
   camera.up.set(0, 0, 1);
-  const controls = new OrbitControls(camera, renderer.domElement);
-  const view = { renderer, scene, camera, controls, container };
+  const controls = new OrbitControls(camera, box);
+  const view = { scene, camera, controls, box };
   view.frame = (center, radius) => {
     camera.position.copy(center).add(new THREE.Vector3(1.3, -1.6, 0.9).normalize().multiplyScalar(radius / Math.tan(Math.PI / 9) * 1.1));
     controls.target.copy(center);
     controls.update();
   };
+  const rect = () => {
+    const r = box.getBoundingClientRect(), c = renderer.domElement.getBoundingClientRect();
+    return { x: r.left - c.left, y: c.bottom - r.bottom, w: Math.max(1, r.width), h: Math.max(1, r.height) };
+  };
   view.resize = () => {
-    const w = container.clientWidth || 400, h = container.clientHeight || 300;
-    renderer.setSize(w, h, false);
-    camera.aspect = w / h;
+    const r = rect();
+    camera.aspect = r.w / r.h;
     camera.updateProjectionMatrix();
   };
-  view.render = () => renderer.render(scene, camera);
+  view.render = () => {
+    const r = rect();
+    renderer.setViewport(r.x, r.y, r.w, r.h);
+    renderer.setScissor(r.x, r.y, r.w, r.h);
+    renderer.render(scene, camera);
+  };
+  controls.addEventListener('change', view.render);  // drawn on demand: when the camera or q moves
   return view;
 }
 
@@ -145,20 +163,25 @@ function main() {
   const leftBox = el('div', { id: 'pinv', class: 'view' });
   const rightBox = el('div', { id: 'dcinv', class: 'view' });
   views.append(mainBox, leftBox, rightBox);
-  let main, left, right;
+  let main, left, right, renderer;
   try {
-    main = makeView(mainBox, '<b>q</b>: the arm, the two ellipsoids at the tip (drawn to scale per robot), the singular directions');
-    left = makeView(leftBox, '<b>J+</b> and <b>I − J+ J</b> (pseudo-inverse): faint, the arm at q; solid, after the two motions');
-    right = makeView(rightBox, '<b>Jbar</b> and <b>I − Jbar J</b> (dynamically consistent): faint, the arm at q; solid, after the two motions');
+    renderer = makeRenderer(views);
+    main = makeView(renderer, mainBox, '<b>q</b>: the arm, the two ellipsoids at the tip (drawn to scale per robot), the singular directions');
+    left = makeView(renderer, leftBox, '<b>J+</b> and <b>I − J+ J</b> (pseudo-inverse): faint, the arm at q; solid, after the two motions');
+    right = makeView(renderer, rightBox, '<b>Jbar</b> and <b>I − Jbar J</b> (dynamically consistent): faint, the arm at q; solid, after the two motions');
   } catch (e) {
     views.append(el('p', {}, 'This browser could not create a WebGL context, so the explorer cannot draw.'));
     console.error(`opspace explorer: WebGL unavailable: ${e.message}`);
     return;
   }
   const allViews = [main, left, right];
-  window.addEventListener('resize', () => { allViews.forEach((v) => v.resize()); draw(); });
+  const resize = () => {
+    renderer.setSize(views.clientWidth || 800, views.clientHeight || 600, false);
+    allViews.forEach((v) => v.resize());
+  };
+  window.addEventListener('resize', () => { resize(); draw(); });
 
-  const velocity = new THREE.Mesh(new THREE.SphereGeometry(1, 40, 24), new THREE.MeshStandardMaterial({ color: '#3498db', transparent: true, opacity: 0.45, depthWrite: false }));
+  const velocity = new THREE.Mesh(new THREE.SphereGeometry(1, 40, 24), new THREE.MeshLambertMaterial({ color: '#3498db', transparent: true, opacity: 0.45, depthWrite: false }));
   const mass = new THREE.Mesh(new THREE.SphereGeometry(1, 40, 24), new THREE.MeshBasicMaterial({ color: '#27ae60', wireframe: true, transparent: true, opacity: 0.5 }));
   main.scene.add(velocity, mass);
   let arrows = [];
@@ -197,11 +220,11 @@ function main() {
       selfSlider.value = '0';
       tipSlider.value = '0';
       for (const v of allViews) for (const k of ['robot', 'ghost']) if (v[k]) { v.scene.remove(v[k].root); v[k] = null; }
-      main.robot = buildRobot(robot.scene, 1);
-      left.ghost = buildRobot(robot.scene, 0.25);
-      left.robot = buildRobot(robot.scene, 1);
-      right.ghost = buildRobot(robot.scene, 0.25);
-      right.robot = buildRobot(robot.scene, 1);
+      main.robot = buildRobot(robot.scene, 1, 'lambert');
+      left.ghost = buildRobot(robot.scene, 0.25, 'lambert');
+      left.robot = buildRobot(robot.scene, 1, 'lambert');
+      right.ghost = buildRobot(robot.scene, 0.25, 'lambert');
+      right.robot = buildRobot(robot.scene, 1, 'lambert');
       for (const v of allViews) for (const k of ['robot', 'ghost']) if (v[k]) v.scene.add(v[k].root);
       // Scales fixed per robot at q0: the largest finite radius is drawn 0.25 m long.
       const v0 = core.view(robot.handle, request());
@@ -212,7 +235,8 @@ function main() {
       for (const p of v0.poses) box.expandByPoint(new THREE.Vector3(p[0], p[1], p[2]));
       const center = box.getCenter(new THREE.Vector3());
       const radius = Math.max(0.45, box.getSize(new THREE.Vector3()).length() / 2 + 0.3);
-      allViews.forEach((v) => { v.resize(); v.frame(center, radius); });
+      resize();
+      allViews.forEach((v) => v.frame(center, radius));
       draw();
     }
 
@@ -233,6 +257,7 @@ function main() {
     function draw() {
       const t0 = performance.now();
       const v = core.view(robot.handle, request());
+      api.computeMs.push(performance.now() - t0);
       last = v;
       poseBodies(main.robot, v.poses);
       poseBodies(left.ghost, v.poses);
@@ -242,8 +267,8 @@ function main() {
       const tip = new THREE.Vector3(...v.x);
       velocity.position.copy(tip);
       mass.position.copy(tip);
-      placeEllipsoid(velocity, v.velocity.axes, v.velocity.radii, velocityScale, 0.6);
-      placeEllipsoid(mass, v.mass.axes, v.mass.radii, massScale, 0.6);
+      placeEllipsoid(velocity, v.velocity.axes, v.velocity.radii, velocityScale, 0.35);
+      placeEllipsoid(mass, v.mass.axes, v.mass.radii, massScale, 0.35);
       for (const a of arrows) main.scene.remove(a);
       arrows = v.singular.map((s) => {
         const a = new THREE.ArrowHelper(new THREE.Vector3(...s.u), tip, 0.3, new THREE.Color(TYPE_COLORS[s.type]), 0.06, 0.03);
@@ -255,17 +280,14 @@ function main() {
       tipValue.textContent = `${parseFloat(tipSlider.value).toFixed(3)} m`;
       selfValue.textContent = degrees(robot.joints[parseInt(selfJoint.value, 10)], parseFloat(selfSlider.value));
       for (const view of allViews) view.render();
+      // Reading a pixel back waits until the GPU process has drawn the frame (the test's timing).
+      if (api.waitForGpu) renderer.getContext().readPixels(0, 0, 1, 1, 0x1908, 0x1401, new Uint8Array(4));
       api.redrawMs.push(performance.now() - t0);
     }
 
     for (const c of [tipDir, tipSlider, selfJoint, selfSlider]) c.addEventListener('input', draw);
     robotMenu.addEventListener('change', () => select(robotMenu.value));
-    function tick() {
-      for (const v of allViews) { v.controls.update(); v.render(); }
-      requestAnimationFrame(tick);
-    }
     select(robots[0].key);
-    requestAnimationFrame(tick);
 
     // The test hook: the page's own numbers and controls.
     api.robots = robots.map((r) => r.key);

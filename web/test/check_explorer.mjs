@@ -129,12 +129,12 @@ try {
   await page.screenshot({ path: `${artefacts}/explorer-pp.png` });
 
   // 4. Moving a slider changes the drawn ellipsoids: with the robot hidden, the main view shows
-  // the ellipsoids (and arrows, none on the iiwa here); turning joint 2 by 0.5 rad moves the
+  // the ellipsoids (and arrows, none on the iiwa here; the lower views show the arm); turning joint 2 by 0.5 rad moves the
   // tip by tens of centimetres and turns the ellipsoids, so many of their pixels change.
   await page.evaluate(() => window.opspaceExplorer.select('iiwa'));
   const pixels = await page.evaluate(() => {
     const api = window.opspaceExplorer;
-    const canvas = document.querySelector('#main canvas');
+    const canvas = document.getElementById('canvas');
     const grab = () => {
       const c = document.createElement('canvas');
       c.width = canvas.width;
@@ -144,7 +144,6 @@ try {
       return ctx.getImageData(0, 0, c.width, c.height).data;
     };
     api.setRobotVisible(false);
-    const background = (() => { api.setJoint(1, api.view().pseudo_inverse.q[1]); return null; })();
     const before = grab();
     const q1 = parseFloat(document.getElementById('q1').value);
     api.setJoint(1, q1 + 0.5);
@@ -155,22 +154,30 @@ try {
     for (let i = 0; i < before.length; i += 4) {
       if (Math.abs(before[i] - after[i]) + Math.abs(before[i + 1] - after[i + 1]) + Math.abs(before[i + 2] - after[i + 2]) > 24) ++changed;
     }
-    return { changed: changed / (before.length / 4), background };
+    return { changed: changed / (before.length / 4) };
   });
-  check(pixels.changed > 0.005, `moving joint 2 of the iiwa changes ${(100 * pixels.changed).toFixed(2)} % of the main view's pixels with the robot hidden (> 0.5 %)`);
+  check(pixels.changed > 0.005, `moving joint 2 of the iiwa changes ${(100 * pixels.changed).toFixed(2)} % of the canvas's pixels with the robot hidden in the top view (> 0.5 %)`);
 
-  // 5. Redraw time of a slider move on the iiwa (compute and render the three views), measured
-  // in the page: reported for docs/performance.md, not judged here (a benchmark, not a test).
+  // 5. Redraw time of a slider move on the iiwa (compute and render the three views, waiting for
+  // the GPU process to finish drawing them), measured in the page: reported for
+  // docs/performance.md, not judged here (a benchmark, not a test).
   const timing = await page.evaluate(() => {
     const api = window.opspaceExplorer;
+    api.waitForGpu = true;
     api.redrawMs.length = 0;
+    api.computeMs.length = 0;
     const q0 = parseFloat(document.getElementById('q3').value);
     for (let k = 0; k < 60; ++k) api.setJoint(3, q0 + 0.01 * (k % 20));
+    api.waitForGpu = false;
     const t = api.redrawMs.slice().sort((a, b) => a - b);
-    return { median: t[Math.floor(t.length / 2)], p90: t[Math.floor(0.9 * t.length)], max: t[t.length - 1], n: t.length };
+    const c = api.computeMs.slice().sort((a, b) => a - b);
+    return { median: t[Math.floor(t.length / 2)], p90: t[Math.floor(0.9 * t.length)], max: t[t.length - 1], n: t.length,
+      compute: c[Math.floor(c.length / 2)], pixels: document.querySelectorAll('canvas').length &&
+        [...document.querySelectorAll('canvas')].map((x) => `${x.width}x${x.height}`).join(' + ') };
   });
   console.log(`redraw after a slider move on the iiwa: median ${timing.median.toFixed(2)} ms, 90th percentile ` +
-    `${timing.p90.toFixed(2)} ms, max ${timing.max.toFixed(2)} ms over ${timing.n} moves`);
+    `${timing.p90.toFixed(2)} ms, max ${timing.max.toFixed(2)} ms over ${timing.n} moves; of which the ` +
+    `library's computation (WebAssembly) median ${timing.compute.toFixed(2)} ms; canvases ${timing.pixels}`);
   await page.screenshot({ path: `${artefacts}/explorer-iiwa.png` });
   await page.evaluate(() => window.opspaceExplorer.select('puma'));
   await page.locator('#self-s').fill('0.6');
