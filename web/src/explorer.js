@@ -57,6 +57,24 @@ function coreApi(core) {
   };
 }
 
+/// The unit sphere's three great circles in the coordinate planes, as line segments: scaled and
+/// turned like an ellipsoid, they are its three principal sections (cheaper to draw than a
+/// wireframe, and they show the axes).
+function principalRings(segments = 64) {
+  const points = [];
+  for (let plane = 0; plane < 3; ++plane) {
+    for (let i = 0; i < segments; ++i) {
+      for (const k of [i, i + 1]) {
+        const a = (2 * Math.PI * k) / segments, p = [0, 0, 0];
+        p[plane] = Math.cos(a);
+        p[(plane + 1) % 3] = Math.sin(a);
+        points.push(new THREE.Vector3(...p));
+      }
+    }
+  }
+  return new THREE.BufferGeometry().setFromPoints(points);
+}
+
 /// An ellipsoid from its axes (columns) and radii; null radii (infinite) are drawn at `clip`.
 function placeEllipsoid(mesh, axes, radii, scale, clip) {
   const r = radii.map((v) => (v === null ? clip : Math.min(clip, Math.max(1e-3, v * scale))));
@@ -82,7 +100,8 @@ function makeView(renderer, box, labelHtml) {
   const label = el('div', { class: 'label' });
   label.innerHTML = labelHtml;
   box.append(label);
-  const scene = baseScene();
+  // A 2 m floor: the arms reach under a metre, and software WebGL pays for every line pixel.
+  const scene = baseScene(2);
   const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 100);
   camera.up.set(0, 0, 1);
   const controls = new OrbitControls(camera, box);
@@ -153,7 +172,7 @@ function main() {
   const legend = el('div', { id: 'legend' });
   legend.innerHTML = [
     ['#3498db', 'velocity ellipsoid {Jv δq : |δq| ≤ 1}: semi-axes σ_i along u_i (SVD of Jv)'],
-    ['#27ae60', 'mass ellipsoid {v : vᵀ Λv⁻¹ v ≤ 1}: its radius along u is √m_u, the effective mass m_u = 1 / (uᵀ Λv⁻¹ u) the tip presents along u. Drawn clipped where it is infinite'],
+    ['#27ae60', 'mass ellipsoid {v : vᵀ Λv⁻¹ v ≤ 1}, drawn as its three principal sections: its radius along u is √m_u, the effective mass m_u = 1 / (uᵀ Λv⁻¹ u) the tip presents along u. Drawn clipped where it is infinite'],
     [TYPE_COLORS[1], 'Type I singular direction: a self-motion moves the tip along it at second order (a potential whose minimum lies on that motion gets there)'],
     [TYPE_COLORS[2], 'Type II singular direction: no self-motion does; joints that move the tip elsewhere must first rotate the direction away'],
   ].map(([c, t]) => `<p><span class="swatch" style="background:${c}"></span>${t}</p>`).join('');
@@ -182,7 +201,7 @@ function main() {
   window.addEventListener('resize', () => { resize(); draw(); });
 
   const velocity = new THREE.Mesh(new THREE.SphereGeometry(1, 40, 24), new THREE.MeshLambertMaterial({ color: '#3498db', transparent: true, opacity: 0.45, depthWrite: false }));
-  const mass = new THREE.Mesh(new THREE.SphereGeometry(1, 40, 24), new THREE.MeshBasicMaterial({ color: '#27ae60', wireframe: true, transparent: true, opacity: 0.5 }));
+  const mass = new THREE.LineSegments(principalRings(), new THREE.LineBasicMaterial({ color: '#1e8449' }));
   main.scene.add(velocity, mass);
   let arrows = [];
 
@@ -264,6 +283,9 @@ function main() {
       poseBodies(right.ghost, v.poses);
       poseBodies(left.robot, v.pseudo_inverse.poses);
       poseBodies(right.robot, v.dynamically_consistent.poses);
+      // With both motion sliders at zero the faint arm at q lies inside the solid one: not drawn.
+      const req = request();
+      left.ghost.root.visible = right.ghost.root.visible = req.tipS !== 0 || req.selfS !== 0;
       const tip = new THREE.Vector3(...v.x);
       velocity.position.copy(tip);
       mass.position.copy(tip);

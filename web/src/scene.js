@@ -45,17 +45,18 @@ export function buildRobot(data, opacity, lit = 'standard') {
   return { root, bodies };
 }
 
-/// A z-up scene with the pages' background, lights, floor grid and base axes.
-export function baseScene() {
+/// A z-up scene with the pages' background, lights, floor grid (`grid` metres square, 0.1 m
+/// cells) and base axes.
+export function baseScene(grid = 4) {
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xf4f5f7);
   scene.add(new THREE.HemisphereLight(0xffffff, 0x8890a0, 1.6));
   const sun = new THREE.DirectionalLight(0xffffff, 1.8);
   sun.position.set(2, -3, 4);
   scene.add(sun);
-  const grid = new THREE.GridHelper(4, 40, 0xb0b4bc, 0xd6d8de);
-  grid.rotation.x = Math.PI / 2;  // the URDF world is z-up
-  scene.add(grid);
+  const floor = new THREE.GridHelper(grid, Math.round(grid / 0.1), 0xb0b4bc, 0xd6d8de);
+  floor.rotation.x = Math.PI / 2;  // the URDF world is z-up
+  scene.add(floor);
   scene.add(new THREE.AxesHelper(0.2));
   return scene;
 }
