@@ -34,6 +34,12 @@ Eigen::MatrixXd right_inverse(const Model& model, Data& data, const Tip& tip,
   return dynamically_consistent_inverse(Jv, crba(model, data, q));
 }
 
+/// x(q) of the tip (runs forward_kinematics).
+Eigen::Vector3d tip_position(const Model& model, Data& data, const Tip& tip, const Eigen::Ref<const Eigen::VectorXd>& q) {
+  forward_kinematics(model, data, q);
+  return point_position(model, data, tip.frame, tip.point);
+}
+
 int steps_for(double s) { return std::max(1, static_cast<int>(std::ceil(std::abs(s) / kStep))); }
 
 }  // namespace
@@ -65,8 +71,7 @@ Eigen::VectorXd tip_motion(const Model& model, Data& data, const Tip& tip,
                            const Eigen::Ref<const Eigen::VectorXd>& q0, const Eigen::Vector3d& u, double s,
                            Inverse inverse) {
   model.check_joint_vector(q0, "explore::tip_motion: q");
-  forward_kinematics(model, data, q0);
-  const Eigen::Vector3d x0 = point_position(model, data, tip.frame, tip.point);
+  const Eigen::Vector3d x0 = tip_position(model, data, tip, q0);
   const int n = steps_for(s);
   Eigen::VectorXd q = q0;
   Matrix3Xd Jv;
@@ -86,8 +91,7 @@ Eigen::VectorXd self_motion(const Model& model, Data& data, const Tip& tip,
     throw std::invalid_argument("explore::self_motion: joint index " + std::to_string(j) + " is not in [0, " +
                                 std::to_string(model.dof()) + ") for model '" + model.name + "'");
   }
-  forward_kinematics(model, data, q0);
-  const Eigen::Vector3d x0 = point_position(model, data, tip.frame, tip.point);
+  const Eigen::Vector3d x0 = tip_position(model, data, tip, q0);
   const int n = steps_for(s);
   Eigen::VectorXd q = q0;
   Matrix3Xd Jv;

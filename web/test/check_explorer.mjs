@@ -5,27 +5,18 @@
 // request, what the page's WebAssembly module computes. Exit 0: every check passed; 1: one
 // failed; 77: no Chromium (ctest SKIP). Screenshots of each robot go to ARTEFACT_DIR.
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync } from 'node:fs';
+import { mkdirSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { checker, launch, openPage } from './chromium.mjs';
 
 const [page_file, native, artefacts] = process.argv.slice(2);
 if (!page_file || !native || !artefacts) {
   console.error('usage: node check_explorer.mjs PAGE.html OPSPACE_EXPLORER ARTEFACT_DIR');
   process.exit(2);
 }
-const executable = process.env.CHROMIUM || '/usr/bin/chromium';
-if (!existsSync(executable)) {
-  console.log(`SKIP: no Chromium at ${executable} (apt-get install chromium; bash scripts/test installs it)`);
-  process.exit(77);
-}
 mkdirSync(artefacts, { recursive: true });
 
-const failures = [];
-const check = (ok, what) => {
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-};
+const { check, failures } = checker();
 
 /// The largest difference between two view results, |a - b| / max(1, |a|), walking both.
 /// Directions (the columns of 'axes', each 'u') are defined up to sign: each is compared with
@@ -61,18 +52,9 @@ function difference(a, b, path = '', key = '') {
   return worst;
 }
 
-const browser = await chromium.launch({
-  executablePath: executable,
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-    '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader'],
-});
+const browser = await launch();
 try {
-  const page = await browser.newPage({ viewport: { width: 1400, height: 900 } });
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  page.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
+  const { page, errors } = await openPage(browser, { width: 1400, height: 900 });
   await page.goto(pathToFileURL(page_file).href);
   await page.waitForFunction(() => window.opspaceExplorer && window.opspaceExplorer.ready, null, { timeout: 60000 });
   const robots = await page.evaluate(() => window.opspaceExplorer.robots);

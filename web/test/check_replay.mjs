@@ -5,9 +5,8 @@
 // the robot, so each test passes its own (tests/vis/CMakeLists.txt says why).
 // Exit 0: the page loaded without console errors, play/pause and the slider work, the robot
 // covers part of the view and moves; 1: a check failed; 77: no Chromium (ctest SKIP).
-import { existsSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { checker, launch, openPage } from './chromium.mjs';
 
 const [page_file, screenshot, share_arg = '0.02'] = process.argv.slice(2);
 const min_robot_share = Number(share_arg);
@@ -15,32 +14,12 @@ if (!page_file || !screenshot || !(min_robot_share > 0 && min_robot_share < 1)) 
   console.error('usage: node check_replay.mjs PAGE.html SCREENSHOT.png [MIN_ROBOT_SHARE, between 0 and 1]');
   process.exit(2);
 }
-const executable = process.env.CHROMIUM || '/usr/bin/chromium';
-if (!existsSync(executable)) {
-  console.log(`SKIP: no Chromium at ${executable} (apt-get install chromium; bash scripts/test installs it)`);
-  process.exit(77);
-}
 
-const failures = [];
-const check = (ok, what) => {
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-};
+const { check, failures } = checker();
 
-// The flags Chromium needs on a machine with no GPU and a closed network. WebGL then runs on
-// SwiftShader, which Chromium only allows for trusted content when asked to.
-const browser = await chromium.launch({
-  executablePath: executable,
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-    '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader'],
-});
+const browser = await launch();
 try {
-  const page = await browser.newPage({ viewport: { width: 1200, height: 800 } });
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  page.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
+  const { page, errors } = await openPage(browser, { width: 1200, height: 800 });
 
   await page.goto(`${pathToFileURL(page_file).href}#t=1`);
   await page.waitForFunction(() => window.opspaceReplay && window.opspaceReplay.ready, null, { timeout: 60000 });
