@@ -32,17 +32,23 @@ void require_size(const Eigen::Ref<const Eigen::MatrixXd>& M, Eigen::Index rows,
   }
 }
 
+Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M) {
+  const Eigen::JacobiSVD<Eigen::MatrixXd> d(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  return {d.matrixU(), d.singularValues(), d.matrixV()};
+}
+
 Eigen::MatrixXd pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J, double tol) {
   require_finite(J, "pseudo_inverse: J");
-  // J = U S V^T  =>  J+ = V S+ U^T
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const Eigen::VectorXd& s = svd.singularValues();
-  const double cutoff = s.size() > 0 ? tol * s(0) : 0.0;
-  Eigen::VectorXd s_inv = Eigen::VectorXd::Zero(s.size());
-  for (Eigen::Index i = 0; i < s.size(); ++i) {
+  // J = U S V^T  =>  J+ = V S+ U^T (the first min(m, n) columns of U and V)
+  const Svd d = svd(J);
+  const Eigen::VectorXd& s = d.sigma;
+  const Eigen::Index k = s.size();
+  const double cutoff = k > 0 ? tol * s(0) : 0.0;
+  Eigen::VectorXd s_inv = Eigen::VectorXd::Zero(k);
+  for (Eigen::Index i = 0; i < k; ++i) {
     if (s(i) > cutoff && s(i) > 0.0) s_inv(i) = 1.0 / s(i);
   }
-  return svd.matrixV() * s_inv.asDiagonal() * svd.matrixU().transpose();
+  return d.V.leftCols(k) * s_inv.asDiagonal() * d.U.leftCols(k).transpose();
 }
 
 Eigen::MatrixXd symmetric_pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& M,

@@ -1,6 +1,5 @@
 #include "opspace/singularity.hpp"
 
-#include <Eigen/SVD>
 #include <stdexcept>
 #include <string>
 
@@ -20,13 +19,13 @@ struct NullSpace {
 };
 
 NullSpace null_space(const Eigen::Ref<const Matrix3Xd>& Jv, double tol) {
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jv, Eigen::ComputeFullV);
-  const Eigen::VectorXd& s = svd.singularValues();
+  const Svd d = svd(Jv);
+  const Eigen::VectorXd& s = d.sigma;
   NullSpace out;
   out.sigma_max = s.size() > 0 ? s(0) : 0.0;
   Eigen::Index rank = 0;
   for (Eigen::Index i = 0; i < s.size(); ++i) rank += s(i) > tol * out.sigma_max ? 1 : 0;
-  out.basis = svd.matrixV().rightCols(Jv.cols() - rank);
+  out.basis = d.V.rightCols(Jv.cols() - rank);
   return out;
 }
 
@@ -41,9 +40,9 @@ Directions3 directions(const Eigen::Ref<const Matrix3Xd>& J, double tol) {
   require_finite(J, "directions: J");
   Directions3 d;
   if (J.cols() == 0) return d;  // nothing moves: every direction is singular, U = I
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU);
-  const Eigen::VectorXd& s = svd.singularValues();  // min(3, n) values, decreasing
-  d.U = svd.matrixU();
+  const Svd j = svd(J);
+  const Eigen::VectorXd& s = j.sigma;  // min(3, n) values, decreasing
+  d.U = j.U;
   d.sigma.head(s.size()) = s;
   for (Eigen::Index i = 0; i < s.size(); ++i) d.rank += s(i) > tol * s(0) ? 1 : 0;
   return d;
@@ -62,7 +61,7 @@ double self_motion_curvature(const Eigen::Ref<const Matrix3Xd>& Jv, const Eigen:
   const NullSpace ns = null_space(Jv, tol);
   if (ns.basis.cols() == 0) return 0.0;
   const Eigen::MatrixXd C = ns.basis.transpose() * directional_hessian(H, u) * ns.basis;
-  return Eigen::JacobiSVD<Eigen::MatrixXd>(C).singularValues()(0);  // ||C||_2
+  return svd(C).sigma(0);  // ||C||_2
 }
 
 SingularityType singularity_type(const Eigen::Ref<const Matrix3Xd>& Jv, const Eigen::Ref<const Eigen::MatrixXd>& H,
@@ -96,10 +95,10 @@ SingularityAnalysis analyse_singularities(const Eigen::Ref<const Matrix3Xd>& Jv,
   }
   // Right singular vectors of L, by decreasing singular value: those above the tolerance span
   // the Type I directions, the rest (the kernel of L) the Type II directions.
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(L, Eigen::ComputeFullV);
-  const Eigen::VectorXd& s = svd.singularValues();
+  const Svd l = svd(L);
+  const Eigen::VectorXd& s = l.sigma;
   for (Eigen::Index i = 0; i < s.size(); ++i) a.type_one += s(i) > tol * ns.sigma_max ? 1 : 0;
-  a.linear.U.rightCols(m) = Us * svd.matrixV();
+  a.linear.U.rightCols(m) = Us * l.V;
   return a;
 }
 
