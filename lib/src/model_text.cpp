@@ -1,16 +1,23 @@
 #include "opspace/model_text.hpp"
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
+#include "printable.hpp"
+
 namespace opspace {
 
 namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // ---- writing ----
 
@@ -80,7 +87,9 @@ class Line {
     for (std::string t; in >> t;) tokens_.push_back(t);
   }
   bool empty() const { return tokens_.empty(); }
-  [[noreturn]] void fail(const std::string& what) const { throw std::invalid_argument(where_ + ": " + what); }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::invalid_argument(where_ + ": " + detail::printable(what));
+  }
   std::string word(const char* what) {
     if (next_ >= tokens_.size()) fail(std::string("missing ") + what);
     return tokens_[next_++];
@@ -113,6 +122,13 @@ class Line {
     }
     return v;
   }
+  /// A joint limit: a finite number, or inf / -inf (a continuous joint, or no <limit>).
+  double limit(const char* what) {
+    if (next_ < tokens_.size() && (tokens_[next_] == "inf" || tokens_[next_] == "-inf")) {
+      return tokens_[next_++] == "inf" ? kInf : -kInf;
+    }
+    return num(what);
+  }
   int index(const char* what, int lowest, int below) {
     const double v = num(what);
     if (v != std::floor(v) || v < lowest || v >= below) {
@@ -129,10 +145,16 @@ class Line {
     }
     return M;
   }
+  /// A rigid transform: R^T R = I and det R = 1, to the rounding of a rotation written in
+  /// 17 digits (1e-9 leaves room for products of several such rotations).
   Eigen::Isometry3d placement(const char* what) {
     Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
     X.linear() = matrix<3, 3>(what);
     X.translation() = matrix<1, 3>(what).transpose();
+    const Eigen::Matrix3d R = X.linear();
+    if (!(R.transpose() * R).isIdentity(1e-9) || !(R.determinant() > 0.0)) {
+      fail(std::string(what) + ": its 3x3 part is not a rotation (R^T R = I, det R = 1)");
+    }
     return X;
   }
   Inertia inertia(const char* what) {
@@ -141,6 +163,12 @@ class Line {
     if (I.mass < 0.0) fail(std::string(what) + ": negative mass");
     I.com = matrix<1, 3>(what).transpose();
     I.inertia = matrix<3, 3>(what);
+    // Symmetric positive semi-definite, as the URDF loader requires (zero stays allowed).
+    const Eigen::Matrix3d& J = I.inertia;
+    const double scale = std::max(1.0, J.cwiseAbs().maxCoeff());
+    if (!(J - J.transpose()).isZero(1e-12 * scale)) fail(std::string(what) + ": inertia matrix not symmetric");
+    const Eigen::Vector3d eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J, Eigen::EigenvaluesOnly).eigenvalues();
+    if (eig.minCoeff() < -1e-12 * scale) fail(std::string(what) + ": inertia matrix not positive semi-definite");
     return I;
   }
   void done() const {
@@ -170,6 +198,9 @@ Shape read_shape(Line& line, int bodies) {
   s.box_size = line.matrix<1, 3>("box size").transpose();
   s.radius = line.num("radius");
   s.length = line.num("length");
+  if (s.box_size.minCoeff() < 0.0 || s.radius < 0.0 || s.length < 0.0) {
+    line.fail("shape of link '" + s.link + "' has a negative size");
+  }
   s.placement = line.placement("shape placement");
   return s;
 }
@@ -235,11 +266,15 @@ Model read_model_text(const std::string& text, const std::string& source) {
       b.joint_placement = line.placement("joint placement");
       b.axis = line.matrix<1, 3>("axis").transpose();
       if (b.axis.norm() == 0.0) line.fail("joint '" + b.joint_name + "' has a zero axis");
+      // The URDF loader normalises the axis: written in 17 digits, its norm is 1 to rounding.
+      if (!(std::abs(b.axis.norm() - 1.0) <= 1e-12)) line.fail("joint '" + b.joint_name + "' has an axis that is not a unit vector");
       b.inertia = line.inertia("body inertia");
-      b.lower = line.num("lower limit");
-      b.upper = line.num("upper limit");
+      b.lower = line.limit("lower limit");
+      b.upper = line.limit("upper limit");
+      if (!(b.lower <= b.upper)) line.fail("joint '" + b.joint_name + "' has its lower limit above its upper limit");
       b.effort = line.num("effort limit");
       b.velocity = line.num("velocity limit");
+      if (b.effort < 0.0 || b.velocity < 0.0) line.fail("joint '" + b.joint_name + "' has a negative effort or velocity limit");
       model.bodies.push_back(b);
     } else if (record == "frame") {
       Frame f;

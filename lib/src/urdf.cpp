@@ -29,27 +29,14 @@
 #include <sstream>
 #include <urdf_parser/urdf_parser.h>
 
+#include "printable.hpp"
+
 namespace opspace {
 
 namespace {
 
-/// The two hexadecimal digits of `c`'s byte.
-std::string hex(char c) {
-  const char* digits = "0123456789abcdef";
-  const auto byte = static_cast<unsigned char>(c);
-  return {digits[byte >> 4], digits[byte & 15]};
-}
-
-/// `text` with its control characters written \xNN: names come from the file, and a message
-/// must not drive the terminal it is printed on.
-std::string printable(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    out += byte < 0x20 || byte == 0x7f ? "\\x" + hex(c) : std::string(1, c);
-  }
-  return out;
-}
+using detail::hex;
+using detail::printable;
 
 /// "<source>:<line>: <cause>", or "<source>: <cause>" when the line is unknown (line <= 0).
 [[noreturn]] void fail(const std::string& source, int line, const std::string& cause) {

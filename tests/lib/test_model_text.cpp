@@ -3,8 +3,11 @@
 #include <doctest/doctest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "opspace/dynamics.hpp"
 #include "opspace/model_text.hpp"
@@ -137,4 +140,70 @@ TEST_CASE("a broken model text is refused with its line and what is wrong") {
   zero_axis.bodies[1].axis.setZero();
   CHECK_THROWS_WITH_AS(read_model_text(write_model_text(zero_axis), "t"), Contains("t:6: joint 'd2' has a zero axis"),
                        std::invalid_argument);
+}
+
+namespace {
+
+/// The 1-based line of `text` on which the first record `record` stands.
+int line_of(const std::string& text, const std::string& record) {
+  const std::size_t at = text.find("\n" + record + " ");
+  REQUIRE(at != std::string::npos);
+  return 2 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
+/// What read_model_text says of the text of `m`.
+std::string refusal(const Model& m) {
+  try {
+    read_model_text(write_model_text(m), "t");
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+}  // namespace
+
+TEST_CASE("a joint without limits, as a continuous joint loads, survives the text") {
+  // The URDF loader gives a continuous joint (or one without <limit>) the limits -inf and inf.
+  Model m = opspace::load_urdf(opspace::robot_path("rrr.urdf"));
+  m.bodies[0].lower = -std::numeric_limits<double>::infinity();
+  m.bodies[0].upper = std::numeric_limits<double>::infinity();
+  check_same(m, read_model_text(write_model_text(m), "continuous"));
+}
+
+TEST_CASE("a model text that the URDF loader could not have made is refused with its line") {
+  // Each edit breaks one rule that load_urdf enforces (lib/src/urdf.cpp) on the PP robot's d2
+  // (line 6), its first visual shape, or its base (line 4).
+  const Model pp = opspace::load_urdf(opspace::robot_path("pp.urdf"));
+  const int visual_line = line_of(write_model_text(pp), "visual");
+  using doctest::Contains;
+  Model m = pp;
+  m.bodies[1].joint_placement.linear() *= 2.0;  // a scaling, not a rotation
+  CHECK_MESSAGE(refusal(m).find("t:6: joint placement: its 3x3 part is not a rotation") == 0, refusal(m));
+  m = pp;
+  m.bodies[1].joint_placement.linear() = Eigen::Vector3d(1, 1, -1).asDiagonal();  // a reflection
+  CHECK_MESSAGE(refusal(m).find("t:6: joint placement: its 3x3 part is not a rotation") == 0, refusal(m));
+  m = pp;
+  m.bodies[1].axis *= 2.0;
+  CHECK_MESSAGE(refusal(m) == "t:6: joint 'd2' has an axis that is not a unit vector", refusal(m));
+  m = pp;
+  std::swap(m.bodies[1].lower, m.bodies[1].upper);
+  CHECK_MESSAGE(refusal(m) == "t:6: joint 'd2' has its lower limit above its upper limit", refusal(m));
+  m = pp;
+  m.bodies[1].effort = -1.0;
+  CHECK_MESSAGE(refusal(m) == "t:6: joint 'd2' has a negative effort or velocity limit", refusal(m));
+  m = pp;
+  m.bodies[1].inertia.inertia(0, 1) = 1.0;  // I_xy without I_yx
+  CHECK_MESSAGE(refusal(m) == "t:6: body inertia: inertia matrix not symmetric", refusal(m));
+  m = pp;
+  m.base_inertia.inertia = Eigen::Vector3d(1, 1, -1).asDiagonal();  // a negative principal moment
+  CHECK_MESSAGE(refusal(m) == "t:4: base inertia: inertia matrix not positive semi-definite", refusal(m));
+  m = pp;
+  REQUIRE(!m.visuals.empty());
+  m.visuals[0].radius = -0.1;
+  // A control character from the text is written \xNN: the message may reach a terminal.
+  CHECK_THROWS_WITH_AS(read_model_text("opspace-model 1\n\x1b[2J x\n", "t"), "t:2: unknown record '\\x1b[2J'",
+                       std::invalid_argument);
+  const std::string shape = "t:" + std::to_string(visual_line) + ": shape of link '" + m.visuals[0].link + "' has a negative size";
+  CHECK_MESSAGE(refusal(m) == shape, refusal(m));
 }

@@ -5,6 +5,8 @@
 //   opspace-explorer view ROBOT Q [U TIP_S SELF_JOINT SELF_S]
 //                                                       prints what the page computes for that
 //                                                       request (Q, U: comma-separated), as JSON
+//   opspace-explorer model ROBOT                        prints the robot's Model as the page hands it
+//                                                       to the module (model_text.hpp)
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -142,8 +144,13 @@ int main(int argc, char** argv) {
   try {
     if (args.size() == 4 && args[0] == "page") return write_page(args[1], args[2], args[3]);
     if (!args.empty() && args[0] == "view") return print_view({args.begin() + 1, args.end()});
+    if (args.size() == 2 && args[0] == "model") {
+      std::cout << opspace::write_model_text(ex::course_robot(args[1]).model);
+      return 0;
+    }
     std::cerr << "usage: opspace-explorer page OUT.html CORE.js VIEWER.js\n"
-                 "       opspace-explorer view ROBOT Q [U TIP_S SELF_JOINT SELF_S]\n";
+                 "       opspace-explorer view ROBOT Q [U TIP_S SELF_JOINT SELF_S]\n"
+                 "       opspace-explorer model ROBOT\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "opspace-explorer: " << e.what() << "\n";

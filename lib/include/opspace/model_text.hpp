@@ -27,9 +27,12 @@ namespace opspace {
 std::string write_model_text(const Model& model);
 
 /// The Model written by write_model_text. `source` names the text in error messages. Throws
-/// std::invalid_argument "SOURCE:LINE: what is wrong" for text that is not such a model: an
-/// unknown record, a missing or non-finite number, a parent that does not come first, a body
-/// index out of range, a zero joint axis, a negative mass, or no `end`.
+/// std::invalid_argument "SOURCE:LINE: what is wrong" for text that is not a Model the URDF
+/// loader could have made: an unknown record, a missing or non-finite number (joint limits may
+/// be inf or -inf), a parent that does not come first, a body index out of range, a placement
+/// that is not a rigid transform, a joint axis that is not a unit vector, limits out of order, a
+/// negative mass, size, effort or velocity, an inertia that is not symmetric positive
+/// semi-definite, or no `end`.
 Model read_model_text(const std::string& text, const std::string& source);
 
 }  // namespace opspace
