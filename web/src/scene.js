@@ -50,33 +50,62 @@ export function buildRobot(data, opacity, lit = 'standard') {
 /// The pages' lights: a hemisphere light (three.js's default "up", +y) and a sun.
 export const LIGHTS = { sky: 0xffffff, ground: 0x8890a0, hemisphere: 1.6, sun: 0xffffff, sunIntensity: 1.8, sunAt: [2, -3, 4] };
 
-// One robot copy in one draw call: its bodies' poses in a uniform array, each vertex lit once
-// (Lambert under LIGHTS, as THREE.MeshLambertMaterial computes per pixel, here per vertex) and
-// its colour passed to the fragments, which only write it.
-const ROBOT_VERTEX = `
+// Lambert shading (as THREE.MeshLambertMaterial under LIGHTS) computed once per vertex, not per
+// pixel: the fragments only write the vertex's colour, which software WebGL fills cheaply.
+// With BODIES defined, one mesh holds a whole robot: each vertex is moved by its body's pose (a
+// uniform array) and has its shape's colour; without, the mesh's own placement and one colour.
+const LIT_VERTEX = `
+#ifdef BODIES
 uniform mat4 bodies[BODIES];
-uniform vec3 sunDirection, sunColor, skyColor, groundColor;
 attribute float body;
 attribute vec3 tint;
+#else
+uniform vec3 tint;
+#endif
+uniform vec3 sunDirection, sunColor, skyColor, groundColor;
 varying vec3 vColor;
 void main() {
+#ifdef BODIES
   mat4 pose = bodies[int(body)];
   vec3 n = normalize(mat3(pose) * normal);
+#else
+  mat4 pose = modelMatrix;
+  vec3 n = normalize(transpose(inverse(mat3(pose))) * normal);  // a scaled shape's normals
+#endif
   vec3 irradiance = sunColor * max(dot(n, sunDirection), 0.0) + mix(groundColor, skyColor, 0.5 * n.y + 0.5);
   vec3 linear = tint * irradiance * 0.3183098862;  // Lambert's BRDF: the albedo over pi
   vColor = mix(pow(linear, vec3(0.41666)) * 1.055 - vec3(0.055), linear * 12.92, vec3(lessThanEqual(linear, vec3(0.0031308))));  // to sRGB
   gl_Position = projectionMatrix * viewMatrix * (pose * vec4(position, 1.0));
 }`;
-const ROBOT_FRAGMENT = `
+const LIT_FRAGMENT = `
 uniform float opacity;
 varying vec3 vColor;
 void main() { gl_FragColor = vec4(vColor, opacity); }`;
+
+/// The vertex-lit material: `color` (a CSS colour) for a single shape, or the robot's `bodies`
+/// (an array of Matrix4, one per body) for a merged robot.
+export function litMaterial({ color = null, bodies = null, opacity = 1 }) {
+  const linear = (hex, k) => new THREE.Color(hex).multiplyScalar(k);
+  const uniforms = {
+    sunDirection: { value: new THREE.Vector3(...LIGHTS.sunAt).normalize() },
+    sunColor: { value: linear(LIGHTS.sun, LIGHTS.sunIntensity) },
+    skyColor: { value: linear(LIGHTS.sky, LIGHTS.hemisphere) },
+    groundColor: { value: linear(LIGHTS.ground, LIGHTS.hemisphere) },
+    opacity: { value: opacity },
+  };
+  if (bodies) uniforms.bodies = { value: bodies };
+  else uniforms.tint = { value: new THREE.Color(color) };  // linear, as three.js's materials take it
+  return new THREE.ShaderMaterial({
+    uniforms, vertexShader: LIT_VERTEX, fragmentShader: LIT_FRAGMENT, defines: bodies ? { BODIES: bodies.length } : {},
+    transparent: opacity < 1, depthWrite: opacity >= 1,
+  });
+}
 
 /// One copy of the robot as one mesh (one draw call): every shape's triangles, placed in its
 /// body's frame, in one geometry whose vertices carry their body's index and their shape's
 /// colour. `pose(poses)` moves the bodies: poses[i] = [px, py, pz, qx, qy, qz, qw] of body i.
 export function buildMergedRobot(data, opacity, segments = 16) {
-  const positions = [], normals = [], tints = [], bodies = [], indices = [];
+  const positions = [], normals = [], tints = [], owners = [], indices = [];
   const place = new THREE.Matrix4(), color = new THREE.Color();
   for (const shape of data.shapes) {
     const g = geometryOf(shape, segments);
@@ -86,7 +115,7 @@ export function buildMergedRobot(data, opacity, segments = 16) {
     positions.push(...g.attributes.position.array);
     normals.push(...g.attributes.normal.array);
     color.set(shape.color);  // linear, as three.js's materials take it
-    for (let i = 0; i < n; ++i) { tints.push(color.r, color.g, color.b); bodies.push(shape.body < 0 ? data.bodies : shape.body); }
+    for (let i = 0; i < n; ++i) { tints.push(color.r, color.g, color.b); owners.push(shape.body < 0 ? data.bodies : shape.body); }
     for (const i of g.index.array) indices.push(base + i);
     g.dispose();
   }
@@ -94,25 +123,14 @@ export function buildMergedRobot(data, opacity, segments = 16) {
   geometry.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
   geometry.setAttribute('normal', new THREE.Float32BufferAttribute(normals, 3));
   geometry.setAttribute('tint', new THREE.Float32BufferAttribute(tints, 3));
-  geometry.setAttribute('body', new THREE.Float32BufferAttribute(bodies, 1));
+  geometry.setAttribute('body', new THREE.Float32BufferAttribute(owners, 1));
   geometry.setIndex(indices);
-  const linear = (hex, k) => new THREE.Color(hex).multiplyScalar(k);
-  const uniforms = {
-    bodies: { value: Array.from({ length: data.bodies + 1 }, () => new THREE.Matrix4()) },  // the last: the base
-    sunDirection: { value: new THREE.Vector3(...LIGHTS.sunAt).normalize() },
-    sunColor: { value: linear(LIGHTS.sun, LIGHTS.sunIntensity) },
-    skyColor: { value: linear(LIGHTS.sky, LIGHTS.hemisphere) },
-    groundColor: { value: linear(LIGHTS.ground, LIGHTS.hemisphere) },
-    opacity: { value: opacity },
-  };
-  const material = new THREE.ShaderMaterial({
-    uniforms, vertexShader: ROBOT_VERTEX, fragmentShader: ROBOT_FRAGMENT, defines: { BODIES: data.bodies + 1 },
-    transparent: opacity < 1, depthWrite: opacity >= 1,
-  });
+  const bodies = Array.from({ length: data.bodies + 1 }, () => new THREE.Matrix4());  // the last: the base
+  const material = litMaterial({ bodies, opacity });
   const root = new THREE.Mesh(geometry, material);
   root.frustumCulled = false;  // its bounding sphere is the bodies' at rest
   const position = new THREE.Vector3(), turn = new THREE.Quaternion(), one = new THREE.Vector3(1, 1, 1);
-  const pose = (poses) => poses.forEach((p, i) => uniforms.bodies.value[i].compose(position.set(p[0], p[1], p[2]), turn.set(p[3], p[4], p[5], p[6]), one));
+  const pose = (poses) => poses.forEach((p, i) => bodies[i].compose(position.set(p[0], p[1], p[2]), turn.set(p[3], p[4], p[5], p[6]), one));
   return { root, pose };
 }
 
