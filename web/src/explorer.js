@@ -240,8 +240,8 @@ function main() {
       selfJoint.value = String(robot.self_joint);
       selfSlider.value = '0';
       tipSlider.value = '0';
-      for (const v of allViews) for (const k of ['robot', 'ghost']) if (v[k]) { v.scene.remove(v[k].root); v[k] = null; }
-      // Each copy one mesh (scene.js): five draw calls for the arms, not five per shape.
+      for (const v of allViews) for (const k of ['robot', 'ghost']) if (v[k]) { v.scene.remove(v[k].root); v[k].dispose(); v[k] = null; }
+      // Each copy is one mesh (scene.js): one draw call per arm, not one per shape.
       main.robot = buildMergedRobot(robot.scene, 1);
       left.ghost = buildMergedRobot(robot.scene, 0.25);
       left.robot = buildMergedRobot(robot.scene, 1);

@@ -103,7 +103,8 @@ export function litMaterial({ color = null, bodies = null, opacity = 1 }) {
 
 /// One copy of the robot as one mesh (one draw call): every shape's triangles, placed in its
 /// body's frame, in one geometry whose vertices carry their body's index and their shape's
-/// colour. `pose(poses)` moves the bodies: poses[i] = [px, py, pz, qx, qy, qz, qw] of body i.
+/// colour. `pose(poses)` moves the bodies: poses[i] = [px, py, pz, qx, qy, qz, qw] of body i;
+/// `dispose()` frees its buffers when the page shows another robot.
 export function buildMergedRobot(data, opacity, segments = 16) {
   const positions = [], normals = [], tints = [], owners = [], indices = [];
   const place = new THREE.Matrix4(), color = new THREE.Color();
@@ -131,7 +132,8 @@ export function buildMergedRobot(data, opacity, segments = 16) {
   root.frustumCulled = false;  // its bounding sphere is the bodies' at rest
   const position = new THREE.Vector3(), turn = new THREE.Quaternion(), one = new THREE.Vector3(1, 1, 1);
   const pose = (poses) => poses.forEach((p, i) => bodies[i].compose(position.set(p[0], p[1], p[2]), turn.set(p[3], p[4], p[5], p[6]), one));
-  return { root, pose };
+  const dispose = () => { geometry.dispose(); material.dispose(); };
+  return { root, pose, dispose };
 }
 
 /// A z-up scene with the pages' background, lights, floor grid (`grid` metres square, 0.1 m
