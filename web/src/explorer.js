@@ -6,7 +6,7 @@
 // this file only turns them into pictures.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { baseScene, buildMergedRobot, el, litMaterial } from './scene.js';
+import { baseScene, buildMergedRobot, el, lineMaterial, litMaterial } from './scene.js';
 
 // The test hook (web/test/check_explorer.mjs).
 const api = { ready: false, redrawMs: [], computeMs: [], waitForGpu: false };
@@ -203,7 +203,7 @@ function main() {
 
   // 24 x 16 facets (was 40 x 24): software WebGL pays for every triangle, even a small one.
   const velocity = new THREE.Mesh(new THREE.SphereGeometry(1, 24, 16), litMaterial({ color: '#3498db', opacity: 0.45 }));
-  const mass = new THREE.LineSegments(principalRings(), new THREE.LineBasicMaterial({ color: '#1e8449' }));
+  const mass = new THREE.LineSegments(principalRings(), lineMaterial('#1e8449'));
   main.scene.add(velocity, mass);
   let arrows = [];
 

@@ -54,7 +54,11 @@ export const LIGHTS = { sky: 0xffffff, ground: 0x8890a0, hemisphere: 1.6, sun: 0
 // pixel: the fragments only write the vertex's colour, which software WebGL fills cheaply.
 // With BODIES defined, one mesh holds a whole robot: each vertex is moved by its body's pose (a
 // uniform array) and has its shape's colour; without, the mesh's own placement and one colour.
-const LIT_VERTEX = `
+const TO_SRGB = `
+vec3 toSRGB(vec3 linear) {
+  return mix(pow(linear, vec3(0.41666)) * 1.055 - vec3(0.055), linear * 12.92, vec3(lessThanEqual(linear, vec3(0.0031308))));
+}`;
+const LIT_VERTEX = TO_SRGB + `
 #ifdef BODIES
 uniform mat4 bodies[BODIES];
 attribute float body;
@@ -74,7 +78,7 @@ void main() {
 #endif
   vec3 irradiance = sunColor * max(dot(n, sunDirection), 0.0) + mix(groundColor, skyColor, 0.5 * n.y + 0.5);
   vec3 linear = tint * irradiance * 0.3183098862;  // Lambert's BRDF: the albedo over pi
-  vColor = mix(pow(linear, vec3(0.41666)) * 1.055 - vec3(0.055), linear * 12.92, vec3(lessThanEqual(linear, vec3(0.0031308))));  // to sRGB
+  vColor = toSRGB(linear);
   gl_Position = projectionMatrix * viewMatrix * (pose * vec4(position, 1.0));
 }`;
 const LIT_FRAGMENT = `
@@ -99,6 +103,29 @@ export function litMaterial({ color = null, bodies = null, opacity = 1 }) {
     uniforms, vertexShader: LIT_VERTEX, fragmentShader: LIT_FRAGMENT, defines: bodies ? { BODIES: bodies.length } : {},
     transparent: opacity < 1, depthWrite: opacity >= 1,
   });
+}
+
+// Unlit lines (the floor grid, the axes, the mass ellipsoid's rings) with their colour made sRGB
+// once per vertex, not per pixel as THREE.LineBasicMaterial does.
+const LINE_VERTEX = TO_SRGB + `
+#ifndef USE_COLOR
+uniform vec3 tint;
+#endif
+varying vec3 vColor;
+void main() {
+#ifdef USE_COLOR
+  vColor = toSRGB(color);
+#else
+  vColor = toSRGB(tint);
+#endif
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+}`;
+
+/// The line material: one CSS `color`, or without it the geometry's vertex colours (linear).
+export function lineMaterial(color = null) {
+  const uniforms = { opacity: { value: 1 } };
+  if (color) uniforms.tint = { value: new THREE.Color(color) };
+  return new THREE.ShaderMaterial({ uniforms, vertexShader: LINE_VERTEX, fragmentShader: LIT_FRAGMENT, vertexColors: !color });
 }
 
 /// One copy of the robot as one mesh (one draw call): every shape's triangles, placed in its
@@ -159,6 +186,7 @@ export function baseScene(grid = 4) {
   }
   floor.geometry.dispose();
   axes.dispose();
-  scene.add(new THREE.LineSegments(lines, floor.material));
+  floor.material.dispose();
+  scene.add(new THREE.LineSegments(lines, lineMaterial()));
   return scene;
 }
