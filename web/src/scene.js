@@ -50,14 +50,16 @@ export function buildRobot(data, opacity, lit = 'standard') {
 /// The pages' lights: a hemisphere light (three.js's default "up", +y) and a sun.
 export const LIGHTS = { sky: 0xffffff, ground: 0x8890a0, hemisphere: 1.6, sun: 0xffffff, sunIntensity: 1.8, sunAt: [2, -3, 4] };
 
-// Lambert shading (as THREE.MeshLambertMaterial under LIGHTS) computed once per vertex, not per
-// pixel: the fragments only write the vertex's colour, which software WebGL fills cheaply.
-// With BODIES defined, one mesh holds a whole robot: each vertex is moved by its body's pose (a
-// uniform array) and has its shape's colour; without, the mesh's own placement and one colour.
+// Linear colour to the canvas's sRGB (three.js's sRGBTransferOETF).
 const TO_SRGB = `
 vec3 toSRGB(vec3 linear) {
   return mix(pow(linear, vec3(0.41666)) * 1.055 - vec3(0.055), linear * 12.92, vec3(lessThanEqual(linear, vec3(0.0031308))));
 }`;
+
+// Lambert shading (as THREE.MeshLambertMaterial under LIGHTS) computed once per vertex, not per
+// pixel: the fragments only write the vertex's colour, which software WebGL fills cheaply.
+// With BODIES defined, one mesh holds a whole robot: each vertex is moved by its body's pose (a
+// uniform array) and has its shape's colour; without, the mesh's own placement and one colour.
 const LIT_VERTEX = TO_SRGB + `
 #ifdef BODIES
 uniform mat4 bodies[BODIES];
