@@ -6,7 +6,7 @@
 // this file only turns them into pictures.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { baseScene, buildRobot, el, setPose } from './scene.js';
+import { baseScene, buildMergedRobot, el, lineMaterial, litMaterial } from './scene.js';
 
 // The test hook (web/test/check_explorer.mjs).
 const api = { ready: false, redrawMs: [], computeMs: [], waitForGpu: false };
@@ -115,13 +115,16 @@ function makeView(renderer, box, labelHtml) {
     const r = box.getBoundingClientRect(), c = renderer.domElement.getBoundingClientRect();
     return { x: r.left - c.left, y: c.bottom - r.bottom, w: Math.max(1, r.width), h: Math.max(1, r.height) };
   };
+  // The box's place in the canvas, measured when the page is laid out anew (resize), not on every
+  // redraw: reading it after the numbers' text changed would force a layout inside the redraw.
+  let place = null;
   view.resize = () => {
-    const r = rect();
-    camera.aspect = r.w / r.h;
+    place = rect();
+    camera.aspect = place.w / place.h;
     camera.updateProjectionMatrix();
   };
   view.render = () => {
-    const r = rect();
+    const r = place || rect();
     renderer.setViewport(r.x, r.y, r.w, r.h);
     renderer.setScissor(r.x, r.y, r.w, r.h);
     renderer.render(scene, camera);
@@ -129,8 +132,6 @@ function makeView(renderer, box, labelHtml) {
   controls.addEventListener('change', view.render);  // drawn on demand: when the camera or q moves
   return view;
 }
-
-function poseBodies(robot, poses) { poses.forEach((p, i) => setPose(robot.bodies[i], p)); }
 
 function main() {
   const data = JSON.parse(document.getElementById('opspace-explorer-data').textContent);
@@ -200,8 +201,9 @@ function main() {
   };
   window.addEventListener('resize', () => { resize(); draw(); });
 
-  const velocity = new THREE.Mesh(new THREE.SphereGeometry(1, 40, 24), new THREE.MeshLambertMaterial({ color: '#3498db', transparent: true, opacity: 0.45, depthWrite: false }));
-  const mass = new THREE.LineSegments(principalRings(), new THREE.LineBasicMaterial({ color: '#1e8449' }));
+  // 24 x 16 facets (was 40 x 24): software WebGL pays for every triangle, even a small one.
+  const velocity = new THREE.Mesh(new THREE.SphereGeometry(1, 24, 16), litMaterial({ color: '#3498db', opacity: 0.45 }));
+  const mass = new THREE.LineSegments(principalRings(), lineMaterial('#1e8449'));
   main.scene.add(velocity, mass);
   let arrows = [];
 
@@ -238,12 +240,13 @@ function main() {
       selfJoint.value = String(robot.self_joint);
       selfSlider.value = '0';
       tipSlider.value = '0';
-      for (const v of allViews) for (const k of ['robot', 'ghost']) if (v[k]) { v.scene.remove(v[k].root); v[k] = null; }
-      main.robot = buildRobot(robot.scene, 1, 'lambert');
-      left.ghost = buildRobot(robot.scene, 0.25, 'lambert');
-      left.robot = buildRobot(robot.scene, 1, 'lambert');
-      right.ghost = buildRobot(robot.scene, 0.25, 'lambert');
-      right.robot = buildRobot(robot.scene, 1, 'lambert');
+      for (const v of allViews) for (const k of ['robot', 'ghost']) if (v[k]) { v.scene.remove(v[k].root); v[k].dispose(); v[k] = null; }
+      // Each copy is one mesh (scene.js): one draw call per arm, not one per shape.
+      main.robot = buildMergedRobot(robot.scene, 1);
+      left.ghost = buildMergedRobot(robot.scene, 0.25);
+      left.robot = buildMergedRobot(robot.scene, 1);
+      right.ghost = buildMergedRobot(robot.scene, 0.25);
+      right.robot = buildMergedRobot(robot.scene, 1);
       for (const v of allViews) for (const k of ['robot', 'ghost']) if (v[k]) v.scene.add(v[k].root);
       // Scales fixed per robot at q0: the largest finite radius is drawn 0.25 m long.
       const v0 = core.view(robot.handle, request());
@@ -278,11 +281,11 @@ function main() {
       const v = core.view(robot.handle, request());
       api.computeMs.push(performance.now() - t0);
       last = v;
-      poseBodies(main.robot, v.poses);
-      poseBodies(left.ghost, v.poses);
-      poseBodies(right.ghost, v.poses);
-      poseBodies(left.robot, v.pseudo_inverse.poses);
-      poseBodies(right.robot, v.dynamically_consistent.poses);
+      main.robot.pose(v.poses);
+      left.ghost.pose(v.poses);
+      right.ghost.pose(v.poses);
+      left.robot.pose(v.pseudo_inverse.poses);
+      right.robot.pose(v.dynamically_consistent.poses);
       // With both motion sliders at zero the faint arm at q lies inside the solid one: not drawn.
       const req = request();
       left.ghost.root.visible = right.ghost.root.visible = req.tipS !== 0 || req.selfS !== 0;
