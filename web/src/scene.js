@@ -26,9 +26,8 @@ export function setPose(object, pose, offset = 0) {
   object.quaternion.set(pose[offset + 3], pose[offset + 4], pose[offset + 5], pose[offset + 6]);
 }
 
-/// One copy of the robot: a group per body holding its shapes. `lit: 'lambert'` shades with
-/// THREE.MeshLambertMaterial, cheaper per pixel than the physically based default.
-export function buildRobot(data, opacity, lit = 'standard') {
+/// One copy of the robot (the replay page's): a group per body holding its shapes.
+export function buildRobot(data, opacity) {
   const root = new THREE.Group();
   const bodies = [];
   for (let i = 0; i < data.bodies; ++i) {
@@ -38,8 +37,7 @@ export function buildRobot(data, opacity, lit = 'standard') {
   }
   for (const shape of data.shapes) {
     const common = { color: shape.color, transparent: opacity < 1, opacity, depthWrite: opacity >= 1 };
-    const material = lit === 'lambert' ? new THREE.MeshLambertMaterial(common)
-      : new THREE.MeshStandardMaterial({ ...common, roughness: 0.55, metalness: 0.1 });
+    const material = new THREE.MeshStandardMaterial({ ...common, roughness: 0.55, metalness: 0.1 });
     const mesh = new THREE.Mesh(geometryOf(shape), material);
     setPose(mesh, shape.placement);
     (shape.body < 0 ? root : bodies[shape.body]).add(mesh);
