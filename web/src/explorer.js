@@ -298,6 +298,11 @@ function main() {
       arrows = v.singular.map((s) => {
         const a = new THREE.ArrowHelper(new THREE.Vector3(...s.u), tip, 0.3, new THREE.Color(TYPE_COLORS[s.type]), 0.06, 0.03);
         a.userData = { u: s.u, type: s.type, color: TYPE_COLORS[s.type] };
+        // Drawn over the arm: a direction along a link (the 3R arm's Z0) would hide inside it.
+        for (const part of [a.line, a.cone]) {
+          part.material.depthTest = false;
+          part.renderOrder = 1;
+        }
         main.scene.add(a);
         return a;
       });
