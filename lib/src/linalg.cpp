@@ -32,23 +32,26 @@ void require_size(const Eigen::Ref<const Eigen::MatrixXd>& M, Eigen::Index rows,
   }
 }
 
-Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M) {
-  const Eigen::JacobiSVD<Eigen::MatrixXd> d(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  return {d.matrixU(), d.singularValues(), d.matrixV()};
+Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M, unsigned int options) {
+  const Eigen::JacobiSVD<Eigen::MatrixXd> d(M, options);
+  Svd out;
+  out.sigma = d.singularValues();
+  if (d.computeU()) out.U = d.matrixU();
+  if (d.computeV()) out.V = d.matrixV();
+  return out;
 }
 
 Eigen::MatrixXd pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J, double tol) {
   require_finite(J, "pseudo_inverse: J");
-  // J = U S V^T  =>  J+ = V S+ U^T (the first min(m, n) columns of U and V)
-  const Svd d = svd(J);
+  // J = U S V^T  =>  J+ = V S+ U^T
+  const Svd d = svd(J, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const Eigen::VectorXd& s = d.sigma;
-  const Eigen::Index k = s.size();
-  const double cutoff = k > 0 ? tol * s(0) : 0.0;
-  Eigen::VectorXd s_inv = Eigen::VectorXd::Zero(k);
-  for (Eigen::Index i = 0; i < k; ++i) {
+  const double cutoff = s.size() > 0 ? tol * s(0) : 0.0;
+  Eigen::VectorXd s_inv = Eigen::VectorXd::Zero(s.size());
+  for (Eigen::Index i = 0; i < s.size(); ++i) {
     if (s(i) > cutoff && s(i) > 0.0) s_inv(i) = 1.0 / s(i);
   }
-  return d.V.leftCols(k) * s_inv.asDiagonal() * d.U.leftCols(k).transpose();
+  return d.V * s_inv.asDiagonal() * d.U.transpose();
 }
 
 Eigen::MatrixXd symmetric_pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& M,

@@ -19,7 +19,7 @@ struct NullSpace {
 };
 
 NullSpace null_space(const Eigen::Ref<const Matrix3Xd>& Jv, double tol) {
-  const Svd d = svd(Jv);
+  const Svd d = svd(Jv, Eigen::ComputeFullV);
   const Eigen::VectorXd& s = d.sigma;
   NullSpace out;
   out.sigma_max = s.size() > 0 ? s(0) : 0.0;
@@ -40,7 +40,7 @@ Directions3 directions(const Eigen::Ref<const Matrix3Xd>& J, double tol) {
   require_finite(J, "directions: J");
   Directions3 d;
   if (J.cols() == 0) return d;  // nothing moves: every direction is singular, U = I
-  const Svd j = svd(J);
+  const Svd j = svd(J, Eigen::ComputeFullU);
   const Eigen::VectorXd& s = j.sigma;  // min(3, n) values, decreasing
   d.U = j.U;
   d.sigma.head(s.size()) = s;
@@ -61,7 +61,7 @@ double self_motion_curvature(const Eigen::Ref<const Matrix3Xd>& Jv, const Eigen:
   const NullSpace ns = null_space(Jv, tol);
   if (ns.basis.cols() == 0) return 0.0;
   const Eigen::MatrixXd C = ns.basis.transpose() * directional_hessian(H, u) * ns.basis;
-  return svd(C).sigma(0);  // ||C||_2
+  return svd(C, 0).sigma(0);  // ||C||_2
 }
 
 SingularityType singularity_type(const Eigen::Ref<const Matrix3Xd>& Jv, const Eigen::Ref<const Eigen::MatrixXd>& H,
@@ -95,7 +95,7 @@ SingularityAnalysis analyse_singularities(const Eigen::Ref<const Matrix3Xd>& Jv,
   }
   // Right singular vectors of L, by decreasing singular value: those above the tolerance span
   // the Type I directions, the rest (the kernel of L) the Type II directions.
-  const Svd l = svd(L);
+  const Svd l = svd(L, Eigen::ComputeFullV);
   const Eigen::VectorXd& s = l.sigma;
   for (Eigen::Index i = 0; i < s.size(); ++i) a.type_one += s(i) > tol * ns.sigma_max ? 1 : 0;
   a.linear.U.rightCols(m) = Us * l.V;

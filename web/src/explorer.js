@@ -294,7 +294,7 @@ function main() {
       mass.position.copy(tip);
       placeEllipsoid(velocity, v.velocity.axes, v.velocity.radii, velocityScale, 0.35);
       placeEllipsoid(mass, v.mass.axes, v.mass.radii, massScale, 0.35);
-      for (const a of arrows) main.scene.remove(a);
+      for (const a of arrows) { main.scene.remove(a); a.dispose(); }  // its geometry and materials
       arrows = v.singular.map((s) => {
         const a = new THREE.ArrowHelper(new THREE.Vector3(...s.u), tip, 0.3, new THREE.Color(TYPE_COLORS[s.type]), 0.06, 0.03);
         a.userData = { u: s.u, type: s.type, color: TYPE_COLORS[s.type] };

@@ -23,16 +23,16 @@ namespace opspace {
 /// the smallest physical singular value of the course's robots away from singularities.
 inline constexpr double kSvdTolerance = 1e-10;
 
-/// Singular value decomposition M = U diag(sigma) V^T, U (rows x rows) and V (cols x cols) full,
-/// sigma (min(rows, cols)) decreasing. The library's one instance of Eigen::JacobiSVD: the other
-/// units call this instead of instantiating it again (it is a large part of a build,
-/// docs/performance.md).
+/// Singular value decomposition M = U diag(sigma) V^T, sigma (min(rows, cols)) decreasing; U and
+/// V as `options` asks (Eigen::ComputeFullU, ComputeThinU, ComputeFullV, ComputeThinV; empty
+/// when not asked). The library's one instance of Eigen::JacobiSVD: the other units call this
+/// instead of instantiating it again (it is a large part of a build, docs/performance.md).
 struct Svd {
   Eigen::MatrixXd U;
   Eigen::VectorXd sigma;
   Eigen::MatrixXd V;
 };
-Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M);
+Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M, unsigned int options);
 
 /// Moore-Penrose pseudo-inverse by SVD: J+ = V S+ U^T, with S+ inverting sigma_i > tol * sigma_max.
 Eigen::MatrixXd pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J,
