@@ -1,6 +1,9 @@
 #include "opspace/dynamics.hpp"
 
+#include <stdexcept>
+
 #include "opspace/kinematics.hpp"
+#include "small_decompositions.hpp"
 #include "spatial.hpp"
 
 namespace opspace {
@@ -142,8 +145,11 @@ const Eigen::VectorXd& forward_dynamics(const Model& model, Data& data,
   // qdd = A^-1 (tau - (b + g)), with b + g = RNEA(q, qdot, 0) computed into qdd itself.
   rnea_at_pose(model, data, &qdot, nullptr, model.gravity, data.qdd);
   data.qdd = tau - data.qdd;
-  data.A_llt.compute(data.A);
-  data.A_llt.solveInPlace(data.qdd);
+  data.A_factor = data.A;
+  if (!detail::cholesky_in_place(data.A_factor)) {
+    throw std::invalid_argument("forward_dynamics: A(q) is not positive definite (a massless chain?)");
+  }
+  detail::cholesky_solve_in_place(data.A_factor, data.qdd);
   return data.qdd;
 }
 

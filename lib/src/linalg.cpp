@@ -1,10 +1,11 @@
 #include "opspace/linalg.hpp"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+
+#include "small_decompositions.hpp"
 
 namespace opspace {
 
@@ -33,11 +34,40 @@ void require_size(const Eigen::Ref<const Eigen::MatrixXd>& M, Eigen::Index rows,
 }
 
 Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M, unsigned int options) {
-  const Eigen::JacobiSVD<Eigen::MatrixXd> d(M, options);
+  // One-sided Jacobi on the tall one of M and M^T, T (r x k, r >= k): T R = W with orthogonal
+  // columns, so T = Uhat diag(sigma) R^T with sigma_j = |w_j| and Uhat_j = w_j / sigma_j. Then
+  // M = T gives U = Uhat, V = R; M = T^T gives U = R, V = Uhat.
+  const bool tall = M.rows() >= M.cols();
+  Eigen::MatrixXd W = tall ? Eigen::MatrixXd(M) : Eigen::MatrixXd(M.transpose());
+  const Eigen::Index r = W.rows(), k = W.cols();
+  // A column this small is zero to round-off: its direction is completed, not normalised.
+  const double negligible = std::numeric_limits<double>::epsilon() * W.norm();
+  Eigen::MatrixXd R;
+  detail::orthogonalize_columns(W, R, negligible);
   Svd out;
-  out.sigma = d.singularValues();
-  if (d.computeU()) out.U = d.matrixU();
-  if (d.computeV()) out.V = d.matrixV();
+  out.sigma = W.colwise().norm().transpose();
+  for (Eigen::Index i = 0; i < k; ++i) {  // decreasing, the columns alongside
+    Eigen::Index largest = i;
+    for (Eigen::Index j = i + 1; j < k; ++j) largest = out.sigma(j) > out.sigma(largest) ? j : largest;
+    if (largest == i) continue;
+    std::swap(out.sigma(i), out.sigma(largest));
+    detail::swap_columns(W, i, largest);
+    detail::swap_columns(R, i, largest);
+  }
+  const bool want_u = (options & (Eigen::ComputeThinU | Eigen::ComputeFullU)) != 0;
+  const bool want_v = (options & (Eigen::ComputeThinV | Eigen::ComputeFullV)) != 0;
+  const bool full_hat = (options & (tall ? Eigen::ComputeFullU : Eigen::ComputeFullV)) != 0;
+  if (tall ? want_u : want_v) {
+    Eigen::MatrixXd Uhat(r, full_hat ? r : k);
+    Eigen::Index valid = 0;
+    while (valid < k && out.sigma(valid) > negligible) {
+      Uhat.col(valid) = W.col(valid) / out.sigma(valid);
+      ++valid;
+    }
+    detail::complete_orthonormal(Uhat, valid);
+    (tall ? out.U : out.V) = std::move(Uhat);
+  }
+  if (tall ? want_v : want_u) (tall ? out.V : out.U) = std::move(R);
   return out;
 }
 
@@ -51,7 +81,7 @@ Eigen::MatrixXd pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J, doubl
   for (Eigen::Index i = 0; i < s.size(); ++i) {
     if (s(i) > cutoff && s(i) > 0.0) s_inv(i) = 1.0 / s(i);
   }
-  return d.V * s_inv.asDiagonal() * d.U.transpose();
+  return (d.V * s_inv.asDiagonal()).lazyProduct(d.U.transpose());
 }
 
 Eigen::MatrixXd symmetric_pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& M,
@@ -62,14 +92,15 @@ Eigen::MatrixXd symmetric_pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>
                                 ", expected a square matrix");
   }
   // M = Q D Q^T  =>  M+ = Q D+ Q^T (eigenvalues ascending; the last is the largest)
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(M);
-  const Eigen::VectorXd& d = eig.eigenvalues();
+  Eigen::MatrixXd S = M, Q;
+  Eigen::VectorXd d;
+  detail::symmetric_eigen(S, d, Q, true);
   const double cutoff = d.size() > 0 ? tol * d(d.size() - 1) : 0.0;
   Eigen::VectorXd d_inv = Eigen::VectorXd::Zero(d.size());
   for (Eigen::Index i = 0; i < d.size(); ++i) {
     if (d(i) > cutoff && d(i) > 0.0) d_inv(i) = 1.0 / d(i);
   }
-  return eig.eigenvectors() * d_inv.asDiagonal() * eig.eigenvectors().transpose();
+  return (Q * d_inv.asDiagonal()).lazyProduct(Q.transpose());
 }
 
 Eigen::MatrixXd weighted_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J,
@@ -82,12 +113,13 @@ Eigen::MatrixXd weighted_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J,
   if (!(W - W.transpose()).isZero(1e-12 * (scale > 0 ? scale : 1.0))) {
     throw std::invalid_argument("weighted_inverse: W is not symmetric");
   }
-  const Eigen::LLT<Eigen::MatrixXd> llt(W);
-  if (llt.info() != Eigen::Success) {
+  Eigen::MatrixXd L = W;
+  if (!detail::cholesky_in_place(L)) {
     throw std::invalid_argument("weighted_inverse: W is not positive definite");
   }
-  const Eigen::MatrixXd Winv_Jt = llt.solve(J.transpose());  // W^-1 J^T
-  return Winv_Jt * symmetric_pseudo_inverse(J * Winv_Jt, tol);
+  Eigen::MatrixXd Winv_Jt = J.transpose();
+  detail::cholesky_solve_in_place(L, Winv_Jt);  // W^-1 J^T
+  return Winv_Jt.lazyProduct(symmetric_pseudo_inverse(J.lazyProduct(Winv_Jt), tol));
 }
 
 Eigen::MatrixXd dynamically_consistent_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J,
@@ -100,7 +132,7 @@ Eigen::MatrixXd nullspace_projector(const Eigen::Ref<const Eigen::MatrixXd>& J,
                                     const Eigen::Ref<const Eigen::MatrixXd>& J_inv) {
   require_size(J_inv, J.cols(), J.rows(),
                "nullspace_projector: J_inv (J is " + size_of(J.rows(), J.cols()) + ")");
-  return Eigen::MatrixXd::Identity(J.cols(), J.cols()) - J_inv * J;
+  return Eigen::MatrixXd::Identity(J.cols(), J.cols()) - J_inv.lazyProduct(J);
 }
 
 }  // namespace opspace

@@ -44,7 +44,7 @@ Data::Data(const Model& model)
       b(Eigen::VectorXd::Zero(model.dof())),
       tau(Eigen::VectorXd::Zero(model.dof())),
       qdd(Eigen::VectorXd::Zero(model.dof())),
-      A_llt(model.dof()),
+      A_factor(Eigen::MatrixXd::Zero(model.dof(), model.dof())),
       v(model.bodies.size(), Eigen::Matrix<double, 6, 1>::Zero()),
       a(model.bodies.size(), Eigen::Matrix<double, 6, 1>::Zero()),
       f(model.bodies.size(), Eigen::Matrix<double, 6, 1>::Zero()),

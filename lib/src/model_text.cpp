@@ -1,6 +1,5 @@
 #include "opspace/model_text.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "printable.hpp"
+#include "small_decompositions.hpp"
 
 namespace opspace {
 
@@ -167,7 +167,9 @@ class Line {
     const Eigen::Matrix3d& J = I.inertia;
     const double scale = std::max(1.0, J.cwiseAbs().maxCoeff());
     if (!(J - J.transpose()).isZero(1e-12 * scale)) fail(std::string(what) + ": inertia matrix not symmetric");
-    const Eigen::Vector3d eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J, Eigen::EigenvaluesOnly).eigenvalues();
+    Eigen::Matrix3d S = J, unused;
+    Eigen::Vector3d eig;
+    detail::symmetric_eigen(S, eig, unused, false);
     if (eig.minCoeff() < -1e-12 * scale) fail(std::string(what) + ": inertia matrix not positive semi-definite");
     return I;
   }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "opspace/linalg.hpp"
+#include "small_decompositions.hpp"
 
 namespace opspace {
 
@@ -25,26 +26,6 @@ Index checked(Index value, Index max, const char* what) {
 // of the course (6 x 7, 3 x 6, 3 x 3) the compiler unrolls and vectorises both, where Eigen's
 // general-purpose LLT and blocked products, built for large matrices, spent most of their time
 // in size dispatch (callgrind, docs/performance.md).
-
-/// A = L L^T: L overwrites the lower triangle of `L` (which holds A on entry; the strict upper
-/// triangle is not read). False if A is not positive definite (or holds a NaN).
-template <typename Mat>
-bool cholesky_in_place(Mat& L) {
-  const Index n = L.rows();
-  for (Index j = 0; j < n; ++j) {
-    double d = L(j, j);
-    for (Index k = 0; k < j; ++k) d -= L(j, k) * L(j, k);
-    if (!(d > 0.0)) return false;
-    const double ljj = std::sqrt(d);
-    L(j, j) = ljj;
-    for (Index i = j + 1; i < n; ++i) {
-      double s = L(i, j);
-      for (Index k = 0; k < j; ++k) s -= L(i, k) * L(j, k);
-      L(i, j) = s / ljj;
-    }
-  }
-  return true;
-}
 
 /// Linv = L^-1 for the lower-triangular L (in its lower triangle; `Linv` holds zeros above), by
 /// forward substitution a row at a time: Linv_i = (e_i - sum_{k<i} L_ik Linv_k) / L_ii. With
@@ -77,8 +58,9 @@ auto view_mut(Member& X) {
 /// Lambda = Q diag(1/mu_i for mu_i > tol mu_max, else 0) Q^T.
 void invert_robustly(TaskSpace& out, double tol) {
   const Index m = out.Lambda.rows();
-  out.eigen.compute(out.Lambda_inv);
-  const auto& mu = out.eigen.eigenvalues();  // ascending
+  TaskMatrix S = out.Lambda_inv;
+  detail::symmetric_eigen(S, out.eigenvalues, out.eigenvectors, true);
+  const auto& mu = out.eigenvalues;  // ascending
   const double cutoff = tol * mu(m - 1);
   out.rank = 0;
   for (Index i = 0; i < m; ++i) {
@@ -86,7 +68,7 @@ void invert_robustly(TaskSpace& out, double tol) {
     out.inverse_eigenvalues(i) = kept ? 1.0 / mu(i) : 0.0;
     out.rank += kept ? 1 : 0;
   }
-  const auto& Q = out.eigen.eigenvectors();
+  const auto& Q = out.eigenvectors;
   out.Lambda.noalias() = Q * out.inverse_eigenvalues.asDiagonal() * Q.transpose();
 }
 
@@ -115,7 +97,7 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
   using NxN = Eigen::Matrix<double, N, N, 0, kMaxN, kMaxN>;
   NxN L(n, n);
   L.template triangularView<Eigen::Lower>() = A;
-  if (!cholesky_in_place(L)) throw std::invalid_argument("operational_space: A is not positive definite");
+  if (!detail::cholesky_in_place(L)) throw std::invalid_argument("operational_space: A is not positive definite");
   // The two triangular solves run by substitution a row at a time: each step is an operation
   // on a whole row of m task columns, which vectorises, and half of L^-1's products (its
   // zeros) are never made.  Forward:  W_i = (J^T_i - sum_{k<i} L_ik W_k) / L_ii.
@@ -148,14 +130,14 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
   using MxMRows = Eigen::Matrix<double, M, M, kRowOrder, kMaxM, kMaxM>;
   MxMRows Rinv = MxMRows::Zero(m, m);
   R.template triangularView<Eigen::Lower>() = Lambda_inv;
-  bool well_conditioned = cholesky_in_place(R);
+  bool well_conditioned = detail::cholesky_in_place(R);
   if (well_conditioned) {
     lower_inverse(R, Rinv);
     Lambda.noalias() = Rinv.transpose().lazyProduct(Rinv);
     well_conditioned = Lambda_inv.norm() * Lambda.norm() * tol < 1.0;  // false for NaN too
   }
   if (well_conditioned) {
-    out.rank = m;  // out.eigen and out.inverse_eigenvalues are left untouched
+    out.rank = m;  // the eigen-decomposition members are left untouched
   } else {
     invert_robustly(out, tol);
   }
@@ -185,7 +167,8 @@ TaskSpace::TaskSpace(Eigen::Index task_dim, Eigen::Index dof)
       p(task_dim),
       Ainv_Jt(dof, task_dim),
       Lambda_inv(task_dim, task_dim),
-      eigen(task_dim),
+      eigenvectors(task_dim, task_dim),
+      eigenvalues(task_dim),
       inverse_eigenvalues(task_dim) {}
 
 void operational_space(const Eigen::Ref<const Eigen::MatrixXd>& A,

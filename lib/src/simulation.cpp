@@ -16,10 +16,11 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+
+#include "small_decompositions.hpp"
 
 static_assert(sizeof(btScalar) == 8,
               "Bullet must be the double-precision build (bullet-float64, BT_USE_DOUBLE_PRECISION)");
@@ -65,11 +66,10 @@ Principal principal_frame(const Inertia& inertia) {
     p.moments = I.diagonal();
     return p;
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (I + I.transpose()));
-  Eigen::Matrix3d V = eig.eigenvectors();  // columns: principal axes in the body frame
+  Eigen::Matrix3d S = 0.5 * (I + I.transpose()), V;
+  detail::symmetric_eigen(S, p.moments, V, true);  // columns of V: principal axes in the body frame
   if (V.determinant() < 0.0) V.col(2) = -V.col(2);  // a rotation, not a reflection
   p.frame.linear() = V;
-  p.moments = eig.eigenvalues();
   return p;
 }
 

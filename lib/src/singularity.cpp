@@ -34,6 +34,16 @@ void require_hessians(const Eigen::Ref<const Eigen::MatrixXd>& H, Eigen::Index n
   require_finite(H, what + ": H");
 }
 
+// C_u = N^T H_u N, the curvature of the tip along u over the self-motions (columns of N).
+// Coefficient-based products: these matrices are at most n x n, and Eigen's blocked product
+// would cost a build seconds for nothing (docs/performance.md).
+Eigen::MatrixXd curvature_on(const Eigen::MatrixXd& N, const Eigen::Ref<const Eigen::MatrixXd>& H,
+                             const Eigen::Vector3d& u) {
+  const Eigen::MatrixXd Hu = directional_hessian(H, u);
+  const Eigen::MatrixXd Hu_N = Hu.lazyProduct(N);
+  return N.transpose().lazyProduct(Hu_N);
+}
+
 }  // namespace
 
 Directions3 directions(const Eigen::Ref<const Matrix3Xd>& J, double tol) {
@@ -60,8 +70,7 @@ double self_motion_curvature(const Eigen::Ref<const Matrix3Xd>& Jv, const Eigen:
   require_hessians(H, Jv.cols(), "self_motion_curvature");
   const NullSpace ns = null_space(Jv, tol);
   if (ns.basis.cols() == 0) return 0.0;
-  const Eigen::MatrixXd C = ns.basis.transpose() * directional_hessian(H, u) * ns.basis;
-  return svd(C, 0).sigma(0);  // ||C||_2
+  return svd(curvature_on(ns.basis, H, u), 0).sigma(0);  // ||C_u||_2
 }
 
 SingularityType singularity_type(const Eigen::Ref<const Matrix3Xd>& Jv, const Eigen::Ref<const Eigen::MatrixXd>& H,
@@ -90,7 +99,7 @@ SingularityAnalysis analyse_singularities(const Eigen::Ref<const Matrix3Xd>& Jv,
   const Eigen::Matrix<double, 3, Eigen::Dynamic> Us = a.linear.singular();
   Eigen::MatrixXd L(k * k, m);
   for (int j = 0; j < m; ++j) {
-    const Eigen::MatrixXd C = ns.basis.transpose() * directional_hessian(H, Us.col(j)) * ns.basis;
+    const Eigen::MatrixXd C = curvature_on(ns.basis, H, Us.col(j));
     L.col(j) = Eigen::Map<const Eigen::VectorXd>(C.data(), k * k);
   }
   // Right singular vectors of L, by decreasing singular value: those above the tolerance span
@@ -98,7 +107,7 @@ SingularityAnalysis analyse_singularities(const Eigen::Ref<const Matrix3Xd>& Jv,
   const Svd l = svd(L, Eigen::ComputeFullV);
   const Eigen::VectorXd& s = l.sigma;
   for (Eigen::Index i = 0; i < s.size(); ++i) a.type_one += s(i) > tol * ns.sigma_max ? 1 : 0;
-  a.linear.U.rightCols(m) = Us * l.V;
+  a.linear.U.rightCols(m) = Us.lazyProduct(l.V);
   return a;
 }
 

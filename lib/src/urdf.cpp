@@ -15,7 +15,6 @@
 
 #include <tinyxml.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -30,6 +29,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "printable.hpp"
+#include "small_decompositions.hpp"
 
 namespace opspace {
 
@@ -418,7 +418,9 @@ class Builder {
     Eigen::Matrix3d I;
     I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
     // Positive semi-definite: zero stays allowed for massless frames and point masses.
-    const Eigen::Vector3d eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly).eigenvalues();
+    Eigen::Matrix3d S = I, unused;
+    Eigen::Vector3d eig;
+    detail::symmetric_eigen(S, eig, unused, false);
     if (!I.allFinite() || eig.minCoeff() < -1e-12 * std::max(1.0, eig.cwiseAbs().maxCoeff())) {
       std::ostringstream s;
       s << "link '" << link.name << "' has an inertia that is not positive definite (eigenvalues "

@@ -3,6 +3,7 @@
 // against the Robotics Toolbox's published PUMA 560 gravity torques.
 #include <doctest/doctest.h>
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -192,6 +193,16 @@ TEST_CASE("forward dynamics inverts inverse dynamics") {
                                 generalized_gravity(model, data, q);
     CHECK(relative(sum - tau, tau) < 1e-8);
   });
+}
+
+TEST_CASE("forward dynamics refuses a robot whose mass matrix is singular instead of returning NaN") {
+  // With both PP links massless A(q) = 0: there is no acceleration to give (A qdd = tau has none).
+  Model model = load_urdf(robot_path("pp.urdf"));
+  for (auto& body : model.bodies) body.inertia = opspace::Inertia{};
+  Data data(model);
+  const Eigen::Vector2d zero = Eigen::Vector2d::Zero();
+  CHECK_THROWS_WITH_AS(forward_dynamics(model, data, zero, zero, Eigen::Vector2d(1.0, 0.0)),
+                       doctest::Contains("not positive definite"), std::invalid_argument);
 }
 
 TEST_CASE("the PP robot's mass matrix is the closed form of problem 1a") {

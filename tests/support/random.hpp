@@ -31,7 +31,7 @@ class Random {
   /// B B^T is positive semi-definite, adding min_eigenvalue * I makes it definite.
   Eigen::MatrixXd spd(Eigen::Index n, double min_eigenvalue = 0.1) {
     const Eigen::MatrixXd B = matrix(n, n);
-    return B * B.transpose() + min_eigenvalue * Eigen::MatrixXd::Identity(n, n);
+    return B.lazyProduct(B.transpose()) + min_eigenvalue * Eigen::MatrixXd::Identity(n, n);
   }
 
   std::mt19937& engine() { return engine_; }

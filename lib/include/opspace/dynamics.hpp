@@ -31,7 +31,8 @@ const Eigen::VectorXd& rnea(const Model& model, Data& data, const Eigen::Ref<con
                             const Eigen::Ref<const Eigen::VectorXd>& qdot,
                             const Eigen::Ref<const Eigen::VectorXd>& qdd);
 
-/// qdd = A^-1 (tau - b - g) (data.qdd; data.A and data.A_llt are updated too).
+/// qdd = A^-1 (tau - b - g) (data.qdd; data.A and data.A_factor are updated too).
+/// Throws std::invalid_argument if A(q) is not positive definite.
 const Eigen::VectorXd& forward_dynamics(const Model& model, Data& data,
                                         const Eigen::Ref<const Eigen::VectorXd>& q,
                                         const Eigen::Ref<const Eigen::VectorXd>& qdot,

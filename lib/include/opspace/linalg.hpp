@@ -25,8 +25,10 @@ inline constexpr double kSvdTolerance = 1e-10;
 
 /// Singular value decomposition M = U diag(sigma) V^T, sigma (min(rows, cols)) decreasing; U and
 /// V as `options` asks (Eigen::ComputeFullU, ComputeThinU, ComputeFullV, ComputeThinV; empty
-/// when not asked). The library's one instance of Eigen::JacobiSVD: the other units call this
-/// instead of instantiating it again (it is a large part of a build, docs/performance.md).
+/// when not asked; Eigen's options, Eigen's conventions). One-sided Jacobi rotations: accurate
+/// for the small matrices of the course, and compiled once here, where each instance of
+/// Eigen::JacobiSVD is a large part of a build (docs/performance.md). A singular value at
+/// round-off (<= eps |M|_F) gets a unit singular vector orthogonal to the others.
 struct Svd {
   Eigen::MatrixXd U;
   Eigen::VectorXd sigma;

@@ -7,7 +7,6 @@
 /// i.e. the joint frame. Bodies are in topological order: bodies[i].parent < i.
 #pragma once
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <string>
@@ -102,7 +101,7 @@ struct Data {
   Eigen::VectorXd b;        ///< Coriolis/centrifugal torques b(q, qdot) (coriolis_centrifugal)
   Eigen::VectorXd tau;      ///< inverse dynamics A qdd + b + g          (rnea)
   Eigen::VectorXd qdd;      ///< forward dynamics A^-1 (tau - b - g)     (forward_dynamics)
-  Eigen::LLT<Eigen::MatrixXd> A_llt;  ///< Cholesky factor of A, kept by forward_dynamics
+  Eigen::MatrixXd A_factor; ///< Cholesky factor L of A = L L^T (lower triangle) (forward_dynamics)
 
   // Recursion workspace, one entry per body (spatial quantities in the base frame, about its
   // origin O: motion [v_O; w], force [f; n_O]).

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 
 namespace opspace {
 
@@ -48,8 +47,10 @@ struct TaskSpace {
 
   // The robust path. When |Lambda^-1|_F |Lambda|_F < 1 / tol (well away from a singularity,
   // where every eigenvalue is kept) Lambda comes from a Cholesky factorisation of Lambda^-1,
-  // and eigen and inverse_eigenvalues are not updated; otherwise from the eigen-decomposition.
-  Eigen::SelfAdjointEigenSolver<TaskMatrix> eigen;  ///< Lambda^-1 = Q diag(mu) Q^T
+  // and the three members below are not updated; otherwise from the eigen-decomposition
+  // Lambda^-1 = Q diag(mu) Q^T (Jacobi rotations, mu ascending).
+  TaskMatrix eigenvectors;  ///< Q
+  TaskVector eigenvalues;   ///< mu
   /// 1 / mu_i for the eigenvalues kept, 0 for those dropped
   TaskVector inverse_eigenvalues;
 };

@@ -1,6 +1,7 @@
 // Known mistakes of problem 4. Each replaces one function, or wraps the law it is given (the
 // reference solutions, or the grader's oracle).
 #include <opspace/hw2/p4.hpp>
+#include <opspace/linalg.hpp>
 
 #include "mistakes.hpp"
 
@@ -16,20 +17,19 @@ using hw2::p4::Target;
 
 // ii. The singular directions taken from V (joint space) instead of U (the tip's space).
 Directions singular_directions_from_v(const Kinematics& k) {
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(k.Jv, Eigen::ComputeFullV);
-  const Eigen::Vector3d s = svd.singularValues();
+  const Svd svd_of_Jv = svd(k.Jv, Eigen::ComputeFullV);  // the library's, not a new JacobiSVD
+  const Eigen::Vector3d s = svd_of_Jv.sigma;
   int rank = 0;
   for (int i = 0; i < 3; ++i) rank += s(i) > hw2::p4::kTolerance * s(0) ? 1 : 0;
   Directions d;
   d.count = 3 - rank;
-  d.u.leftCols(d.count) = svd.matrixV().rightCols(d.count);
+  d.u.leftCols(d.count) = svd_of_Jv.V.rightCols(d.count);
   return d;
 }
 
 // iv. The second-order test over every joint motion instead of the self-motions: H_u != 0.
 SingularityType type_over_all_joint_motions(const Kinematics& k, const Eigen::Vector3d& u) {
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(k.Jv);
-  const double sigma_max = svd.singularValues()(0);
+  const double sigma_max = svd(k.Jv, 0).sigma(0);
   if ((k.Jv.transpose() * u).norm() > hw2::p4::kTolerance * sigma_max) return SingularityType::kNone;
   const Eigen::Matrix3d H_u = u(0) * k.H[0] + u(1) * k.H[1] + u(2) * k.H[2];
   return H_u.cwiseAbs().maxCoeff() > hw2::p4::kTolerance * sigma_max ? SingularityType::kTypeI

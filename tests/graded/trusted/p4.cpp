@@ -106,7 +106,7 @@ std::vector<Case> cases() {
   return out;
 }
 
-Eigen::Matrix3d projector(const Eigen::Ref<const Eigen::MatrixXd>& U) { return U * U.transpose(); }
+Eigen::Matrix3d projector(const Eigen::Ref<const Eigen::MatrixXd>& U) { return U.lazyProduct(U.transpose()); }
 
 // The student's directions as a projector; false (and a finding) if count is impossible.
 bool projector_of(const hw2::p4::Directions& d, const std::string& what, Check& check, Eigen::Matrix3d& P) {
