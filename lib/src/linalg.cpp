@@ -40,6 +40,7 @@ Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M, unsigned int options) {
   const bool tall = M.rows() >= M.cols();
   Eigen::MatrixXd W = tall ? Eigen::MatrixXd(M) : Eigen::MatrixXd(M.transpose());
   const Eigen::Index r = W.rows(), k = W.cols();
+  const double scale = detail::scale_to_unit(W);  // sigma is scaled back at the end
   // A column this small is zero to round-off: its direction is completed, not normalised.
   const double negligible = std::numeric_limits<double>::epsilon() * W.norm();
   Eigen::MatrixXd R;
@@ -68,6 +69,7 @@ Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M, unsigned int options) {
     (tall ? out.U : out.V) = std::move(Uhat);
   }
   if (tall ? want_v : want_u) (tall ? out.V : out.U) = std::move(R);
+  out.sigma *= scale;
   return out;
 }
 

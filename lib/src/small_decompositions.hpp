@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -64,6 +65,20 @@ inline void jacobi_rotation(double app, double aqq, double apq, double& c, doubl
   s = t * c;
 }
 
+/// Divides X by its largest |entry| and returns that factor (1 for a zero matrix, or one with an
+/// infinity): with entries of at most 1 the products below neither overflow nor underflow, for
+/// matrices of any magnitude (1e-300 as 1e300), as Eigen's solvers scale theirs.
+template <typename Mat>
+double scale_to_unit(Mat& X) {
+  double scale = 0.0;
+  for (Eigen::Index j = 0; j < X.cols(); ++j) {
+    for (Eigen::Index i = 0; i < X.rows(); ++i) scale = std::max(scale, std::abs(X(i, j)));  // NaN skipped
+  }
+  if (!(scale > 0.0) || !std::isfinite(scale)) return 1.0;
+  X /= scale;
+  return scale;
+}
+
 /// Columns p and q of X become c x_p - s x_q and s x_p + c x_q (X <- X J).
 template <typename Mat>
 void rotate_columns(Mat& X, Eigen::Index p, Eigen::Index q, double c, double s) {
@@ -91,6 +106,7 @@ void symmetric_eigen(Mat& S, Vec& mu, Mat& Q, bool vectors) {
   for (Eigen::Index j = 0; j < n; ++j) {
     for (Eigen::Index i = 0; i < j; ++i) S(i, j) = S(j, i);
   }
+  const double scale = scale_to_unit(S);
   if (vectors) Q.setIdentity(n, n);
   for (int sweep = 0; sweep < kMaxJacobiSweeps; ++sweep) {
     bool rotated = false;
@@ -113,7 +129,7 @@ void symmetric_eigen(Mat& S, Vec& mu, Mat& Q, bool vectors) {
     }
     if (!rotated) break;
   }
-  mu = S.diagonal();
+  mu = scale * S.diagonal();
   for (Eigen::Index i = 0; i < n; ++i) {  // ascending, the eigenvectors alongside
     Eigen::Index smallest = i;
     for (Eigen::Index j = i + 1; j < n; ++j) smallest = mu(j) < mu(smallest) ? j : smallest;

@@ -243,3 +243,20 @@ TEST_CASE("the symmetric pseudo-inverse agrees with Eigen's SelfAdjointEigenSolv
     }
   }
 }
+
+TEST_CASE("the SVD and the symmetric pseudo-inverse work at any magnitude, 1e-300 as 1e300") {
+  // Both are homogeneous: svd(c M).sigma = c svd(M).sigma and (c S)+ = S+ / c. Unscaled, the
+  // products inside the Jacobi rotations overflow at 1e300 and underflow at 1e-300.
+  Random rng(21);
+  const Eigen::MatrixXd M = rng.matrix(3, 7);
+  const Eigen::MatrixXd S = rng.spd(4);
+  const Eigen::VectorXd sigma = opspace::svd(M, 0).sigma;
+  const Eigen::MatrixXd S_inv = opspace::symmetric_pseudo_inverse(S);
+  for (const double c : {1e-300, 1e300}) {
+    CAPTURE(c);
+    const opspace::Svd d = opspace::svd(c * M, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    CHECK((d.sigma / c - sigma).norm() < 1e-14 * sigma(0));
+    CHECK((d.V.transpose() * d.V - Eigen::MatrixXd::Identity(7, 7)).norm() < 1e-14);
+    CHECK((opspace::symmetric_pseudo_inverse(c * S) * c - S_inv).norm() < 1e-12 * S_inv.norm());
+  }
+}
