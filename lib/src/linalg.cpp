@@ -47,14 +47,8 @@ Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M, unsigned int options) {
   detail::orthogonalize_columns(W, R, negligible);
   Svd out;
   out.sigma = W.colwise().norm().transpose();
-  for (Eigen::Index i = 0; i < k; ++i) {  // decreasing, the columns alongside
-    Eigen::Index largest = i;
-    for (Eigen::Index j = i + 1; j < k; ++j) largest = out.sigma(j) > out.sigma(largest) ? j : largest;
-    if (largest == i) continue;
-    std::swap(out.sigma(i), out.sigma(largest));
-    detail::swap_columns(W, i, largest);
-    detail::swap_columns(R, i, largest);
-  }
+  Eigen::MatrixXd* const factors[] = {&W, &R};
+  detail::sort_with_columns(out.sigma, true, factors);
   const bool want_u = (options & (Eigen::ComputeThinU | Eigen::ComputeFullU)) != 0;
   const bool want_v = (options & (Eigen::ComputeThinV | Eigen::ComputeFullV)) != 0;
   const bool full_hat = (options & (tall ? Eigen::ComputeFullU : Eigen::ComputeFullV)) != 0;

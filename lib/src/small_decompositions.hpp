@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <utility>
 
@@ -95,6 +96,24 @@ void swap_columns(Mat& X, Eigen::Index i, Eigen::Index j) {
   for (Eigen::Index k = 0; k < X.rows(); ++k) std::swap(X(k, i), X(k, j));
 }
 
+/// Sorts `values` (ascending, or decreasing when `decreasing`), permuting the columns of each
+/// matrix in `columns` alongside (a null pointer is skipped). Selection sort: at most 12 values.
+template <typename Vec, typename Mat, std::size_t N>
+void sort_with_columns(Vec& values, bool decreasing, Mat* const (&columns)[N]) {
+  const Eigen::Index n = values.size();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    Eigen::Index best = i;
+    for (Eigen::Index j = i + 1; j < n; ++j) {
+      if (decreasing ? values(j) > values(best) : values(j) < values(best)) best = j;
+    }
+    if (best == i) continue;
+    std::swap(values(i), values(best));
+    for (Mat* X : columns) {
+      if (X != nullptr) swap_columns(*X, i, best);
+    }
+  }
+}
+
 /// S = Q diag(mu) Q^T for a symmetric S given by its lower triangle (the upper one is not read),
 /// mu ascending, by cyclic Jacobi rotations S <- J^T S J until every off-diagonal entry is
 /// negligible: |s_pq| <= eps sqrt(|s_pp s_qq|). S is overwritten; Q is not touched unless
@@ -130,13 +149,8 @@ void symmetric_eigen(Mat& S, Vec& mu, Mat& Q, bool vectors) {
     if (!rotated) break;
   }
   mu = scale * S.diagonal();
-  for (Eigen::Index i = 0; i < n; ++i) {  // ascending, the eigenvectors alongside
-    Eigen::Index smallest = i;
-    for (Eigen::Index j = i + 1; j < n; ++j) smallest = mu(j) < mu(smallest) ? j : smallest;
-    if (smallest == i) continue;
-    std::swap(mu(i), mu(smallest));
-    if (vectors) swap_columns(Q, i, smallest);
-  }
+  Mat* const eigenvectors[] = {vectors ? &Q : nullptr};
+  sort_with_columns(mu, false, eigenvectors);
 }
 
 /// One-sided Jacobi (Hestenes): rotates the columns of W (and, alongside, of R, which starts as
