@@ -6,7 +6,7 @@ set -euo pipefail
 OPSPACE_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 OPSPACE_BUILD="$OPSPACE_ROOT/build/release"
 # What CMakeLists.txt finds, as Debian packages.
-OPSPACE_PACKAGES=(g++ make cmake pkg-config libeigen3-dev doctest-dev libbullet-dev
+OPSPACE_PACKAGES=(g++ make cmake ninja-build pkg-config libeigen3-dev doctest-dev libbullet-dev
                   liburdfdom-dev libbenchmark-dev)
 # The pictures of a run (docs/visuals.md): gnuplot draws the plots (fonts for its PNGs), node
 # and npm bundle the 3D replay viewer at build time (npm fetches over TLS: ca-certificates).
