@@ -7,10 +7,12 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "explore.hpp"
 #include "opspace/dynamics.hpp"
 #include "opspace/kinematics.hpp"
+#include "page_data.hpp"
 #include "robots.hpp"
 
 namespace ex = opspace::explore;
@@ -111,4 +113,22 @@ TEST_CASE("the page's request is refused when it is not finite or not the robot'
   r.self_joint = 3;
   r.self_s = 0.1;
   CHECK_THROWS_AS(ex::view_json(rrr.model, data, rrr.tip, r), std::invalid_argument);
+}
+
+TEST_CASE("a joint without limits reaches the page as null, which JSON can read, not as inf") {
+  ex::Robot rrr = ex::course_robot("rrr");
+  const double inf = std::numeric_limits<double>::infinity();
+  rrr.model.bodies[0].lower = -inf;  // a continuous joint, as urdf.cpp reads one
+  rrr.model.bodies[0].upper = inf;
+  const std::string json = ex::robot_json(rrr);
+  const std::size_t from = json.find("\"joints\":");
+  REQUIRE(from != std::string::npos);
+  const std::string joints = json.substr(from, json.find("\"q0\":", from) - from);
+  const std::string first = "{\"name\":\"" + rrr.model.bodies[0].joint_name + "\",\"prismatic\":false,";
+  CHECK_MESSAGE(joints.find(first + "\"lower\":null,\"upper\":null}") != std::string::npos, "the joints: ", joints);
+  // JSON has no infinity: one "inf" and JSON.parse rejects the whole page. (The Model's text, a
+  // JSON string, does write inf: read_model_text reads it.)
+  CHECK_MESSAGE(joints.find("inf") == std::string::npos, "the joints: ", joints);
+  // The other joints keep their URDF limits, as numbers.
+  CHECK_MESSAGE(joints.find("null", joints.find(first) + first.size() + 30) == std::string::npos, "the joints: ", joints);
 }

@@ -17,7 +17,7 @@
 
 #include "explore.hpp"
 #include "opspace/model_text.hpp"
-#include "opspace/replay.hpp"
+#include "page_data.hpp"
 #include "robots.hpp"
 
 namespace ex = opspace::explore;
@@ -32,51 +32,6 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
-/// A JSON string; '<' escaped so that no "</script>" ends the data block early.
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '<': out += "\\u003c"; break;
-      default: out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
-    }
-  }
-  return out + "\"";
-}
-
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
-std::string robot_json(const ex::Robot& r) {
-  opspace::replay::Scene scene;
-  scene.title = r.title;
-  scene.model = r.model;
-  scene.t = {0.0};
-  scene.q = {r.q0};
-  std::string joints = "[";
-  for (const opspace::Body& b : r.model.bodies) {
-    joints += (joints.size() > 1 ? "," : "") + std::string("{\"name\":") + quoted(b.joint_name) +
-              ",\"prismatic\":" + (b.type == opspace::JointType::kPrismatic ? "true" : "false") +
-              ",\"lower\":" + number(b.lower) + ",\"upper\":" + number(b.upper) + "}";
-  }
-  joints += "]";
-  std::string q0 = "[";
-  for (Eigen::Index i = 0; i < r.q0.size(); ++i) q0 += (i ? "," : "") + number(r.q0(i));
-  q0 += "]";
-  return "{\"key\":" + quoted(r.key) + ",\"title\":" + quoted(r.title) + ",\"caption\":" + quoted(r.caption) +
-         ",\"model\":" + quoted(opspace::write_model_text(r.model)) + ",\"tip_link\":" + quoted(r.tip_link) +
-         ",\"tip_point\":[" + number(r.tip.point.x()) + "," + number(r.tip.point.y()) + "," +
-         number(r.tip.point.z()) + "],\"joints\":" + joints + ",\"q0\":" + q0 +
-         ",\"self_joint\":" + std::to_string(r.self_joint) + ",\"scene\":" + opspace::replay::scene_json(scene) + "}";
-}
-
 /// An inlined script cannot hold "</script".
 std::string inline_script(std::string script) {
   for (std::size_t at = script.find("</script"); at != std::string::npos; at = script.find("</script", at)) {
@@ -87,7 +42,7 @@ std::string inline_script(std::string script) {
 
 int write_page(const std::string& out_path, const std::string& core, const std::string& viewer) {
   std::string robots = "[";
-  for (const ex::Robot& r : ex::course_robots()) robots += (robots.size() > 1 ? "," : "") + robot_json(r);
+  for (const ex::Robot& r : ex::course_robots()) robots += (robots.size() > 1 ? "," : "") + ex::robot_json(r);
   robots += "]";
   std::ofstream out(out_path);
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"

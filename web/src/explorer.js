@@ -34,6 +34,12 @@ html, body { margin: 0; height: 100%; font: 13px system-ui, sans-serif; color: #
 #main { grid-column: 1 / 3; }
 `;
 
+// A slider's range: the joint's limits; an unbounded side (null: a continuous joint, or no
+// <limit>) gets one turn, or one metre, from where the page opens.
+function sliderRange(joint, q0) {
+  const reach = joint.prismatic ? 1 : 2 * Math.PI;
+  return [joint.lower ?? q0 - reach, joint.upper ?? q0 + reach];
+}
 function degrees(joint, value) { return joint.prismatic ? `${value.toFixed(3)} m` : `${(value * 180 / Math.PI).toFixed(1)}°`; }
 
 /// The WebAssembly module's two calls, with the doubles passed through its heap.
@@ -229,7 +235,8 @@ function main() {
       jointsBox.replaceChildren();
       sliders = robot.joints.map((j, i) => {
         const row = el('div', { class: 'row' });
-        const s = el('input', { type: 'range', id: `q${i}`, min: String(j.lower), max: String(j.upper), step: String((j.upper - j.lower) / 400), value: String(q[i]) });
+        const [lower, upper] = sliderRange(j, q[i]);
+        const s = el('input', { type: 'range', id: `q${i}`, min: String(lower), max: String(upper), step: String((upper - lower) / 400), value: String(q[i]) });
         const value = el('span', { class: 'num' }, degrees(j, q[i]));
         s.addEventListener('input', () => { q[i] = parseFloat(s.value); value.textContent = degrees(j, q[i]); draw(); });
         row.append(el('span', {}, j.name), s, value);
