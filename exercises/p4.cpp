@@ -39,8 +39,9 @@ Directions rotation_axes(const Kinematics& k) {
 
 SingularityType singularity_type(const Kinematics& k, const Eigen::Vector3d& u) {
   // iv. kNone unless u^T Jv = 0 (|Jv^T u| <= kTolerance * sigma_max).
-  // The self-motions dq_n (Jv dq_n = 0) are the columns Nb of V whose sigma vanishes. They move
-  // the tip along u only at second order: u . xdd = dq_n^T H_u dq_n, H_u = sum_k u_k H[k].
+  // The self-motions dq_n (Jv dq_n = 0) are the columns Nb of V whose sigma vanishes (a Basis3:
+  // at most 3 columns). They move the tip along u only at second order:
+  // u . xdd = dq_n^T H_u dq_n, H_u = sum_k u_k H[k].
   //   C = Nb^T H_u Nb;   C != 0 (above kTolerance * sigma_max): Type I, otherwise Type II
   // FILL ME IN
   return SingularityType::kNone;

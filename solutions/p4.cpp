@@ -49,10 +49,10 @@ SingularityType singularity_type(const Kinematics& k, const Eigen::Vector3d& u) 
   if ((k.Jv.transpose() * u).norm() > kTolerance * sigma_max) return SingularityType::kNone;
   // The self-motions: right singular vectors of the vanishing singular values.
   const int rank = rank_of(svd.singularValues());
-  const Eigen::MatrixXd Nb = svd.matrixV().rightCols(3 - rank);
+  const Basis3 Nb = svd.matrixV().rightCols(3 - rank);
   const Eigen::Matrix3d H_u = u(0) * k.H[0] + u(1) * k.H[1] + u(2) * k.H[2];
-  const Eigen::MatrixXd C = Nb.transpose() * H_u * Nb;  // second-order motion along u
-  const double curvature = C.size() ? C.cwiseAbs().maxCoeff() : 0.0;
+  const double curvature =  // the largest entry of C = Nb^T H_u Nb: second-order motion along u
+      Nb.cols() > 0 ? (Nb.transpose() * H_u * Nb).cwiseAbs().maxCoeff() : 0.0;
   return curvature > kTolerance * sigma_max ? SingularityType::kTypeI : SingularityType::kTypeII;
 }
 

@@ -37,6 +37,11 @@ struct Directions {
   Eigen::Matrix3d u = Eigen::Matrix3d::Zero();  ///< unit directions in its first `count` columns
 };
 
+/// Up to three vectors of R^3 as columns, e.g. the basis Nb of the self-motions in iv. Its size is
+/// bounded by 3x3, so its products are computed coefficient by coefficient: an Eigen::MatrixXd
+/// works too, but its general matrix product adds about 2 s to every compile of this file.
+using Basis3 = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3>;
+
 /// i. How many degrees of freedom the tip has for positioning: the rank of Jv.
 int degrees_of_freedom(const Kinematics& k);
 
