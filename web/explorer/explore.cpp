@@ -107,6 +107,13 @@ Eigen::VectorXd self_motion(const Model& model, Data& data, const Tip& tip,
 
 // ---- JSON for the page ----
 
+std::string json_number(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
 namespace {
 
 class Json {
@@ -125,13 +132,7 @@ class Json {
   }
   Json& num(double v) {
     comma();
-    if (std::isfinite(v)) {
-      char buffer[32];
-      std::snprintf(buffer, sizeof buffer, "%.17g", v);
-      out_ += buffer;
-    } else {
-      out_ += "null";  // JSON has no infinity: the page reads null as an unbounded radius
-    }
+    out_ += json_number(v);  // null for an unbounded radius
     return *this;
   }
   Json& open(char c) {

@@ -77,4 +77,8 @@ struct Request {
 /// poses and its tip. Throws std::invalid_argument for a wrong-sized or non-finite request.
 std::string view_json(const Model& model, Data& data, const Tip& tip, const Request& request);
 
+/// A number as JSON: 17 significant digits, or null for an infinity or a NaN, which JSON cannot
+/// write (the page reads null as unbounded).
+std::string json_number(double v);
+
 }  // namespace opspace::explore

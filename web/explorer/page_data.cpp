@@ -1,9 +1,7 @@
 // The explorer page's data block (page_data.hpp).
 #include "page_data.hpp"
 
-#include <cmath>
-#include <sstream>
-
+#include "explore.hpp"
 #include "opspace/model_text.hpp"
 #include "opspace/replay.hpp"
 
@@ -26,15 +24,6 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-/// A JSON number; null for an infinity or a NaN, which JSON cannot write.
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
 }  // namespace
 
 std::string robot_json(const Robot& r) {
@@ -47,16 +36,16 @@ std::string robot_json(const Robot& r) {
   for (const Body& b : r.model.bodies) {
     joints += (joints.size() > 1 ? "," : "") + std::string("{\"name\":") + quoted(b.joint_name) +
               ",\"prismatic\":" + (b.type == JointType::kPrismatic ? "true" : "false") +
-              ",\"lower\":" + number(b.lower) + ",\"upper\":" + number(b.upper) + "}";
+              ",\"lower\":" + json_number(b.lower) + ",\"upper\":" + json_number(b.upper) + "}";
   }
   joints += "]";
   std::string q0 = "[";
-  for (Eigen::Index i = 0; i < r.q0.size(); ++i) q0 += (i ? "," : "") + number(r.q0(i));
+  for (Eigen::Index i = 0; i < r.q0.size(); ++i) q0 += (i ? "," : "") + json_number(r.q0(i));
   q0 += "]";
   return "{\"key\":" + quoted(r.key) + ",\"title\":" + quoted(r.title) + ",\"caption\":" + quoted(r.caption) +
          ",\"model\":" + quoted(write_model_text(r.model)) + ",\"tip_link\":" + quoted(r.tip_link) +
-         ",\"tip_point\":[" + number(r.tip.point.x()) + "," + number(r.tip.point.y()) + "," +
-         number(r.tip.point.z()) + "],\"joints\":" + joints + ",\"q0\":" + q0 +
+         ",\"tip_point\":[" + json_number(r.tip.point.x()) + "," + json_number(r.tip.point.y()) + "," +
+         json_number(r.tip.point.z()) + "],\"joints\":" + joints + ",\"q0\":" + q0 +
          ",\"self_joint\":" + std::to_string(r.self_joint) + ",\"scene\":" + replay::scene_json(scene) + "}";
 }
 
