@@ -1,7 +1,11 @@
 #include "opspace/model.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
+
+#include "inertia_check.hpp"
+#include "small_decompositions.hpp"
 
 namespace opspace {
 
@@ -50,5 +54,22 @@ Data::Data(const Model& model)
       f(model.bodies.size(), Eigen::Matrix<double, 6, 1>::Zero()),
       S(model.bodies.size(), Eigen::Matrix<double, 6, 1>::Zero()),
       Ic(model.bodies.size()) {}
+
+namespace detail {
+
+std::string inertia_defect(const Eigen::Matrix3d& I) {
+  if (!I.allFinite()) return "not finite";
+  const double scale = std::max(1.0, I.cwiseAbs().maxCoeff());
+  if (!(I - I.transpose()).isZero(1e-12 * scale)) return "not symmetric";
+  Eigen::Matrix3d S = I, unused;
+  Eigen::Vector3d mu;
+  symmetric_eigen(S, mu, unused, false);
+  if (mu.minCoeff() >= -1e-12 * scale) return "";
+  std::ostringstream s;
+  s << "not positive semi-definite (eigenvalues " << mu.transpose() << ")";
+  return s.str();
+}
+
+}  // namespace detail
 
 }  // namespace opspace

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "printable.hpp"
-#include "small_decompositions.hpp"
+#include "inertia_check.hpp"
 
 namespace opspace {
 
@@ -163,14 +163,9 @@ class Line {
     if (I.mass < 0.0) fail(std::string(what) + ": negative mass");
     I.com = matrix<1, 3>(what).transpose();
     I.inertia = matrix<3, 3>(what);
-    // Symmetric positive semi-definite, as the URDF loader requires (zero stays allowed).
-    const Eigen::Matrix3d& J = I.inertia;
-    const double scale = std::max(1.0, J.cwiseAbs().maxCoeff());
-    if (!(J - J.transpose()).isZero(1e-12 * scale)) fail(std::string(what) + ": inertia matrix not symmetric");
-    Eigen::Matrix3d S = J, unused;
-    Eigen::Vector3d eig;
-    detail::symmetric_eigen(S, eig, unused, false);
-    if (eig.minCoeff() < -1e-12 * scale) fail(std::string(what) + ": inertia matrix not positive semi-definite");
+    // What the URDF loader requires too.
+    const std::string defect = detail::inertia_defect(I.inertia);
+    if (!defect.empty()) fail(std::string(what) + ": inertia matrix " + defect);
     return I;
   }
   void done() const {

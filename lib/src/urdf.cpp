@@ -29,7 +29,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "printable.hpp"
-#include "small_decompositions.hpp"
+#include "inertia_check.hpp"
 
 namespace opspace {
 
@@ -417,16 +417,8 @@ class Builder {
     }
     Eigen::Matrix3d I;
     I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
-    // Positive semi-definite: zero stays allowed for massless frames and point masses.
-    Eigen::Matrix3d S = I, unused;
-    Eigen::Vector3d eig;
-    detail::symmetric_eigen(S, eig, unused, false);
-    if (!I.allFinite() || eig.minCoeff() < -1e-12 * std::max(1.0, eig.cwiseAbs().maxCoeff())) {
-      std::ostringstream s;
-      s << "link '" << link.name << "' has an inertia that is not positive definite (eigenvalues "
-        << eig.transpose() << ")";
-      fail(model_.source, row, s.str());
-    }
+    const std::string defect = detail::inertia_defect(I);
+    if (!defect.empty()) fail(model_.source, row, "link '" + link.name + "' has an inertia that is " + defect);
     const Eigen::Isometry3d Xc = X * to_isometry(in.origin);
     r.mass = in.mass;
     r.com = Xc.translation();

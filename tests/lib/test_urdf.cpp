@@ -150,8 +150,8 @@ TEST_CASE("each broken URDF is refused with its file, line and cause") {
       {"cycle.urdf", ":6: link 'a' cannot be reached from the root 'base': its joints form a loop"},
       {"undeclared_link.urdf", ":5: joint 'j1' refers to link 'arm', which is not declared"},
       {"negative_mass.urdf", ":5: link 'arm' has mass -2 kg; a mass must be >= 0"},
-      {"indefinite_inertia.urdf", ":6: link 'arm' has an inertia that is not positive definite"},
-      {"indefinite_huge_inertia.urdf", ":6: link 'arm' has an inertia that is not positive definite"},
+      {"indefinite_inertia.urdf", ":6: link 'arm' has an inertia that is not positive semi-definite"},
+      {"indefinite_huge_inertia.urdf", ":6: link 'arm' has an inertia that is not positive semi-definite"},
       // urdfdom's messages give no line: the line is that of the joint or link they name.
       {"missing_limit.urdf", ":6: urdfdom rejected the file: Joint [j1] is of type REVOLUTE but it does not specify limits"},
       // Found by fuzzing (docs/fuzzing.md): values urdfdom accepts that the model cannot use.

@@ -22,7 +22,7 @@ class UrdfError : public std::runtime_error {
 /// missing or unreadable file or one over 16 MB, text that is not UTF-8 or holds a NUL byte,
 /// malformed XML, elements nested more than 100 deep or with more than 100 attributes, an
 /// unsupported joint (floating, planar, mimic), a loop or a second root, a negative mass, an
-/// inertia that is not positive definite, a lower limit above the upper one, a negative
+/// inertia that is not positive semi-definite, a lower limit above the upper one, a negative
 /// effort or velocity limit, a negative shape size, or numbers whose sums or products
 /// overflow (docs/model.md, docs/fuzzing.md).
 Model load_urdf(const std::string& path);
