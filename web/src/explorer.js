@@ -6,6 +6,7 @@
 // this file only turns them into pictures.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { sliderRange } from './joint_range.js';
 import { baseScene, buildMergedRobot, el, lineMaterial, litMaterial } from './scene.js';
 
 // The test hook (web/test/check_explorer.mjs).
@@ -34,12 +35,6 @@ html, body { margin: 0; height: 100%; font: 13px system-ui, sans-serif; color: #
 #main { grid-column: 1 / 3; }
 `;
 
-// A slider's range: the joint's limits; an unbounded side (null: a continuous joint, or no
-// <limit>) gets one turn, or one metre, from where the page opens.
-function sliderRange(joint, q0) {
-  const reach = joint.prismatic ? 1 : 2 * Math.PI;
-  return [joint.lower ?? q0 - reach, joint.upper ?? q0 + reach];
-}
 function degrees(joint, value) { return joint.prismatic ? `${value.toFixed(3)} m` : `${(value * 180 / Math.PI).toFixed(1)}°`; }
 
 /// The WebAssembly module's two calls, with the doubles passed through its heap.
