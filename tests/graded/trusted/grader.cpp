@@ -272,6 +272,13 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   const BuildSettings settings{OPSPACE_GRADING_CACHE, options.user, options.isolate, 180.0};
   const std::vector<BuiltRunner> built = build_all(chosen, toolchain, options, settings);
   const double build_seconds = since(start);
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    std::cerr << "  exercises/" << file_of(chosen[i]->key) << ": "
+              << (!built[i].ok ? "not built (the report says why)"
+                  : built[i].cached ? "unchanged since it was last built by this grader: its runner is reused"
+                                    : "compiled")
+              << "\n";
+  }
 
   char pattern[] = "/tmp/opspace-runners-XXXXXX";
   if (!mkdtemp(pattern)) {

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +18,7 @@
 
 #include "runner_process.hpp"
 #include "sandbox.hpp"
+#include "sha256.hpp"
 
 namespace opspace::grading {
 
@@ -106,14 +106,6 @@ std::string read_file(const std::string& path, std::size_t limit) {
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));
   return text;
-}
-
-std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 1469598103934665603ull) {
-  for (const char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 1099511628211ull;
-  }
-  return hash;
 }
 
 std::vector<std::string> lines(const std::string& text) {
@@ -272,6 +264,16 @@ const std::vector<std::string>* inputs_of(const Toolchain& toolchain, const std:
 // the same runner, and each renames only a file it wrote whole.
 std::string temporary(const std::string& path) { return path + ".tmp" + std::to_string(getpid()); }
 
+// The grader's own bytes, part of the cache key: a runner and its report (the calls to
+// oracles, the include check) are reused only by the grader that made them, never by one with
+// other oracles or rules. Empty where /proc is not mounted.
+std::string own_executable() {
+  std::ifstream in("/proc/self/exe", std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
 // Saves and restores what a cached build reported besides its binary.
 void save_report(const std::string& path, const BuiltRunner& built) {
   const std::string tmp = temporary(path);
@@ -340,7 +342,7 @@ Toolchain load_toolchain(const std::string& path) {
   }
   if (t.compile.empty() || t.link.empty() || t.nm.empty())
     throw std::runtime_error(path + ": compile=, link= and nm= are required");
-  t.fingerprint = std::to_string(fnv1a(all));
+  t.fingerprint = Sha256().add(std::to_string(all.size()) + "\n" + all).add(own_executable()).hex();
   return t;
 }
 
@@ -354,6 +356,9 @@ std::vector<Oracle> oracles(const std::string& key) {
     out.push_back({"opspace::weighted_inverse(", "J# (linalg.hpp)",
                    {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1", "vi. the inertia-weighted inverse moves only the light link", split}});
     out.push_back({"opspace::dynamically_consistent_inverse(", "Jbar (linalg.hpp)",
+                   {"vi. the inertia-weighted inverse moves only the light link", split}});
+    // The operational-space quantities of problems 1b-4 hold Jbar too.
+    out.push_back({"opspace::operational_space(", "Jbar among the operational-space quantities (opspace.hpp)",
                    {"vi. the inertia-weighted inverse moves only the light link", split}});
     out.push_back({"opspace::nullspace_projector(", "I - J_inv J (linalg.hpp)",
                    {"iv. I - J+ J keeps only the self-motions that leave the end-effector still",
@@ -390,16 +395,17 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
     return built;
   }
 
-  // The cache: same toolchain, same libraries, same file -> same runner.
-  std::uint64_t hash = fnv1a(toolchain.fingerprint + "\n" + key + "\n" + text);
+  // The cache: same grader and toolchain, same libraries, same file -> same runner. The file
+  // comes last, after its length, so that no two sets of fields give the same bytes.
+  Sha256 hash;
+  hash.add(toolchain.fingerprint + "\n" + key + "\n");
   for (const std::string& input : *inputs) {
     std::error_code ec;
     const auto time = fs::last_write_time(input, ec).time_since_epoch().count();
-    hash = fnv1a(input + std::to_string(time), hash);
+    hash.add(input + "\n" + std::to_string(time) + "\n");
   }
-  char name[64];
-  std::snprintf(name, sizeof name, "runner-%s-%016llx", key.c_str(), static_cast<unsigned long long>(hash));
-  const std::string cached = settings.cache_dir + "/" + name;
+  hash.add(std::to_string(text.size()) + "\n" + text);
+  const std::string cached = settings.cache_dir + "/runner-" + key + "-" + hash.hex();
   fs::create_directories(settings.cache_dir);
   if (fs::exists(cached) && load_report(cached + ".report", built)) {
     built.ok = true;
