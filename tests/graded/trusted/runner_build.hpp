@@ -19,7 +19,7 @@ struct Toolchain {
   std::vector<std::string> include_roots;  ///< folders a student's file may include from
   std::vector<std::string> visible;        ///< what the compiler and linker must see (read-only)
   std::string nm;                          ///< the nm program
-  std::string fingerprint;                 ///< changes when any of the above, or the grader's executable, changes
+  std::string fingerprint;                 ///< changes when any of the above changes, or the grader is rebuilt
 };
 
 /// Reads the toolchain file. Throws std::runtime_error naming the file and line on bad input.
