@@ -14,6 +14,7 @@
 #include <random>
 #include <thread>
 
+#include "interrupt.hpp"
 #include "mistakes.hpp"
 #include "remote_api.hpp"
 #include "runner_build.hpp"
@@ -248,6 +249,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   set_run_seed(options.seed);
   become_subreaper();
+  clean_up_when_interrupted();
 
   const std::vector<Problem> suite = graded_suite();
   std::vector<const Problem*> chosen;
@@ -286,6 +288,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     return 1;
   }
   const std::string run_dir = pattern;
+  track_folder(run_dir);
   chmod(run_dir.c_str(), 0755);
   std::vector<ProblemResult> results;
   Protections protections;
@@ -304,6 +307,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   std::error_code ec;
   fs::remove_all(run_dir, ec);
+  forget_folder(run_dir);
   const double grading_seconds = since(grading_start), seconds = since(start);
   print_report(std::cout, results);
   std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "interrupt.hpp"
 #include "runner_process.hpp"
 #include "sandbox.hpp"
 #include "sha256.hpp"
@@ -420,11 +421,13 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   char pattern[] = "/tmp/opspace-build-XXXXXX";
   if (!mkdtemp(pattern)) throw std::runtime_error("cannot create a build folder in /tmp");
   const std::string work = pattern;
+  track_folder(work);
   struct Cleanup {
     std::string dir;
     ~Cleanup() {
       std::error_code ec;
       fs::remove_all(dir, ec);
+      forget_folder(dir);
     }
   } cleanup{work};
   const std::string file = fs::path(shown_as).filename().string();

@@ -35,6 +35,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "interrupt.hpp"
+
 namespace opspace::grading {
 
 namespace {
@@ -181,6 +183,11 @@ void child_descriptors(ChildPlan& plan) {
 }
 
 [[noreturn]] void child_main(ChildPlan& plan) {
+  // The grader's threads block SIGINT, SIGTERM and SIGHUP (interrupt.hpp); its programs start
+  // with no signal blocked.
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
   if (plan.user_namespace) {
     // Map our own ids into the new user namespace: execve then drops the capabilities this
     // process holds there, since its uid is not 0.
@@ -355,6 +362,7 @@ std::string root_mount_point() {
     if (!mkdtemp(pattern)) throw std::runtime_error(std::string("cannot create a sandbox folder in /tmp: ") + std::strerror(errno));
     std::snprintf(g_root, sizeof g_root, "%s", pattern);
     std::atexit(remove_root);
+    track_folder(g_root);
   }
   return g_root;
 }
@@ -600,6 +608,14 @@ bool wait_until(const Sandboxed& program, std::chrono::steady_clock::time_point 
     if (std::chrono::steady_clock::now() >= deadline) return false;
     std::this_thread::sleep_for(pause);
     pause = std::min(pause * 2, std::chrono::microseconds(5000));
+  }
+}
+
+void kill_live_programs() {
+  const std::lock_guard<std::mutex> hold(programs_lock());
+  for (const pid_t pid : live_programs()) {
+    kill(-pid, SIGKILL);  // it called setsid(): its group is its own
+    kill(pid, SIGKILL);
   }
 }
 

@@ -74,6 +74,10 @@ Sandboxed spawn(const SandboxSpec& spec);
 /// inherited as subreaper), and reaps them. Returns the program's wait status.
 int kill_all(const Sandboxed& program);
 
+/// Sends SIGKILL to every program spawn() started that is still live, and to its process
+/// group, without reaping them: for a grader that is about to end (interrupt.hpp).
+void kill_live_programs();
+
 /// Waits for the program until `deadline`: true with its wait status if it ended, false if
 /// the time ran out (it is still running). Reaps re-parented descendants on the way.
 bool wait_until(const Sandboxed& program, std::chrono::steady_clock::time_point deadline, int& status);

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# An interrupted grading leaves nothing behind: the grader, interrupted while a student's 1b
+# controller hangs (Ctrl-C's SIGINT, then timeout's SIGTERM), must end with 128 + the signal,
+# say so, and leave no folder of its own in /tmp and no runner running. Run alone (ctest
+# RUN_SERIAL): the folders in /tmp are compared before and after.
+#   bash check_interrupt.sh GRADER SOLUTIONS HANGING_CASE WORK
+set -uo pipefail
+grader=$1 solutions=$2 hanging=$3 work=$4
+rm -rf "$work" && mkdir -p "$work/exercises" || exit 1
+cp "$solutions"/p*.cpp "$work/exercises/"
+sed 's/@FAULT@/hang/' "$hanging" > "$work/exercises/p1b.cpp"
+set -m  # background jobs in their own group, with SIGINT not ignored (as in a terminal)
+failed=0
+for signal in INT TERM; do
+  before=$(ls -d /tmp/opspace-* 2>/dev/null | sort)
+  "$grader" --exercises "$work/exercises" --problem 1b > "$work/out-$signal.txt" 2> "$work/err-$signal.txt" &
+  pid=$!
+  for _ in $(seq 1 600); do
+    grep -q "grading problem 1b" "$work/err-$signal.txt" 2>/dev/null && break
+    sleep 0.1
+  done
+  sleep 1  # the hanging controller is now being asked
+  runners=$(pgrep -f "opspace-runners-.*/runner-1b" | tr '\n' ' ')
+  kill -"$signal" "$pid"
+  wait "$pid"
+  code=$?
+  sleep 0.5
+  after=$(ls -d /tmp/opspace-* 2>/dev/null | sort)
+  left=$(comm -13 <(echo "$before") <(echo "$after") | tr '\n' ' ')
+  expected=$((128 + $(kill -l "$signal")))
+  still=""
+  for runner in $runners; do
+    # Killed but not yet reaped by init is dead too: a zombie ('Z') runs nothing.
+    state=$(sed -n 's/^[0-9]* (.*) \([A-Z]\).*/\1/p' "/proc/$runner/stat" 2>/dev/null)
+    [ -n "$state" ] && [ "$state" != Z ] && still+="$runner "
+  done
+  echo "SIG$signal: exit $code (expected $expected); runner(s) ${runners:-none} before, ${still:-none} after; new folders in /tmp: ${left:-none}"
+  [ -n "$runners" ] || { echo "  no runner was running when the signal was sent: nothing was tested"; failed=1; }
+  [ "$code" -eq "$expected" ] || failed=1
+  grep -q "interrupted: the programs it started are stopped" "$work/err-$signal.txt" || { echo "  the grader did not say it was interrupted"; failed=1; }
+  [ -z "$still" ] || failed=1
+  [ -z "$left" ] || failed=1
+done
+[ "$failed" -eq 0 ] && echo "an interrupted grading stops its runners and leaves no folder in /tmp"
+exit "$failed"
