@@ -19,8 +19,14 @@ for signal in INT TERM; do
     grep -q "grading problem 1b" "$work/err-$signal.txt" 2>/dev/null && break
     sleep 0.1
   done
-  sleep 1  # the hanging controller is now being asked
-  runners=$(pgrep -f "opspace-runners-.*/runner-1b" | tr '\n' ' ')
+  # Once its runner runs, the hanging controller is being asked (slower under the sanitizers).
+  runners=""
+  for _ in $(seq 1 600); do
+    runners=$(pgrep -f "opspace-runners-.*/runner-1b" | tr '\n' ' ')
+    [ -n "$runners" ] && break
+    sleep 0.1
+  done
+  sleep 0.5
   kill -"$signal" "$pid"
   wait "$pid"
   code=$?
