@@ -26,6 +26,10 @@ fi
 
 opspace_say() { printf 'opspace: %s\n' "$*" >&2; }
 
+# 1 once opspace_install_packages has installed something (opspace_configure then runs CMake
+# again in an existing build folder).
+OPSPACE_INSTALLED=0
+
 # opspace_missing PACKAGE...: prints those not installed.
 opspace_missing() {
   local p
@@ -71,6 +75,7 @@ opspace_install_packages() {
   fi
   "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq ||
     opspace_say "apt-get update failed; trying with the package lists at hand"
+  OPSPACE_INSTALLED=1
   if [ ${#missing[@]} -gt 0 ]; then
     opspace_say "installing missing Debian packages: ${missing[*]}"
     "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
@@ -95,6 +100,12 @@ opspace_configure() {
   if [ ! -f "$OPSPACE_BUILD/CMakeCache.txt" ]; then
     opspace_say "configuring build/release"
     (cd "$OPSPACE_ROOT" && cmake --preset release >/dev/null)
+  elif [ "$OPSPACE_INSTALLED" = 1 ]; then
+    # What CMake did not find before (em++ after `bash scripts/grade` then `bash scripts/test`)
+    # may be there now: CMake looks again for what it had not found. -S/-B, not the preset: a
+    # folder made with another generator keeps it.
+    opspace_say "configuring build/release again: packages were installed"
+    cmake -S "$OPSPACE_ROOT" -B "$OPSPACE_BUILD" >/dev/null
   fi
 }
 
