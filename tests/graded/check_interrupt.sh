@@ -22,7 +22,8 @@ for signal in INT TERM; do
   # Once its runner runs, the hanging controller is being asked (slower under the sanitizers).
   runners=""
   for _ in $(seq 1 600); do
-    runners=$(pgrep -f "opspace-runners-.*/runner-1b" | tr '\n' ' ')
+    # This grader's own runner (its child): other gradings may run on the machine.
+    runners=$(pgrep -P "$pid" -f "opspace-runners-.*/runner-1b" | tr '\n' ' ')
     [ -n "$runners" ] && break
     sleep 0.1
   done

@@ -6,7 +6,7 @@
 // this file only turns them into pictures.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { sliderRange } from './joint_range.js';
+import { sliderRange } from './joint_range.mjs';
 import { baseScene, buildMergedRobot, el, lineMaterial, litMaterial } from './scene.js';
 
 // The test hook (web/test/check_explorer.mjs).

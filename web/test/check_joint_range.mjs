@@ -1,9 +1,9 @@
-// The explorer's joint sliders (web/src/joint_range.js), checked in node without a browser:
+// The explorer's joint sliders (web/src/joint_range.mjs), checked in node without a browser:
 //   node check_joint_range.mjs
 // Each expected range follows from the rule the page states: a limit is kept as written, a
 // missing one (null in the page data) is one turn, 2 pi rad, or one metre beyond q0.
 import assert from 'node:assert/strict';
-import { sliderRange } from '../src/joint_range.js';
+import { sliderRange } from '../src/joint_range.mjs';
 
 const TURN = 2 * Math.PI;
 const cases = [
