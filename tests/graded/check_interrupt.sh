@@ -9,6 +9,16 @@ grader=$1 solutions=$2 hanging=$3 work=$4
 rm -rf "$work" && mkdir -p "$work/exercises" || exit 1
 cp "$solutions"/p*.cpp "$work/exercises/"
 sed 's/@FAULT@/hang/' "$hanging" > "$work/exercises/p1b.cpp"
+# The runners of grader $1: its children running runner-1b (read from /proc: procps may be absent).
+runners_of() {
+  local stat
+  for stat in /proc/[0-9]*/stat; do
+    local dir=${stat%/stat} line
+    line=$(cat "$stat" 2>/dev/null) || continue
+    [ "$(echo "${line##*) }" | cut -d' ' -f2)" = "$1" ] || continue
+    tr '\0' ' ' < "$dir/cmdline" 2>/dev/null | grep -q "opspace-runners-.*/runner-1b" && printf '%s ' "${dir#/proc/}"
+  done
+}
 set -m  # background jobs in their own group, with SIGINT not ignored (as in a terminal)
 failed=0
 for signal in INT TERM; do
@@ -23,7 +33,7 @@ for signal in INT TERM; do
   runners=""
   for _ in $(seq 1 600); do
     # This grader's own runner (its child): other gradings may run on the machine.
-    runners=$(pgrep -P "$pid" -f "opspace-runners-.*/runner-1b" | tr '\n' ' ')
+    runners=$(runners_of "$pid")
     [ -n "$runners" ] && break
     sleep 0.1
   done
