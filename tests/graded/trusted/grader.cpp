@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <thread>
 
@@ -282,13 +283,14 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
               << "\n";
   }
 
-  char pattern[] = "/tmp/opspace-runners-XXXXXX";
-  if (!mkdtemp(pattern)) {
-    std::cerr << "hw2-grade: cannot create a folder in /tmp\n";
+  std::unique_ptr<TemporaryFolder> run_folder;
+  try {
+    run_folder = std::make_unique<TemporaryFolder>("/tmp/opspace-runners-");
+  } catch (const std::exception& e) {
+    std::cerr << "hw2-grade: " << e.what() << "\n";
     return 1;
   }
-  const std::string run_dir = pattern;
-  track_folder(run_dir);
+  const std::string run_dir = run_folder->path();
   chmod(run_dir.c_str(), 0755);
   std::vector<ProblemResult> results;
   Protections protections;
@@ -305,9 +307,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
       results.push_back(not_built(*chosen[i], broken));
     }
   }
-  std::error_code ec;
-  fs::remove_all(run_dir, ec);
-  forget_folder(run_dir);
+  run_folder.reset();
   const double grading_seconds = since(grading_start), seconds = since(start);
   print_report(std::cout, results);
   std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,

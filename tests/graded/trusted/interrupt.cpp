@@ -3,10 +3,14 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -54,6 +58,19 @@ void track_folder(const std::string& path) {
 void forget_folder(const std::string& path) {
   const std::lock_guard<std::mutex> hold(folders_lock());
   folders().erase(path);
+}
+
+TemporaryFolder::TemporaryFolder(const std::string& prefix) {
+  std::string pattern = prefix + "XXXXXX";
+  if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a folder " + pattern + ": " + std::strerror(errno));
+  path_ = pattern;
+  track_folder(path_);
+}
+
+TemporaryFolder::~TemporaryFolder() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+  forget_folder(path_);
 }
 
 void clean_up_when_interrupted() {

@@ -13,6 +13,21 @@ void track_folder(const std::string& path);
 /// Forgets it (it was removed, or is no longer temporary).
 void forget_folder(const std::string& path);
 
+/// A temporary folder made by mkdtemp() from `prefix` ("/tmp/opspace-build-"), tracked while it
+/// lives, removed with its contents when it goes out of scope.
+class TemporaryFolder {
+ public:
+  /// Throws std::runtime_error if the folder cannot be made.
+  explicit TemporaryFolder(const std::string& prefix);
+  ~TemporaryFolder();
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
 /// From now on SIGINT, SIGTERM and SIGHUP kill the sandboxed programs, remove the tracked
 /// folders and end the process with status 128 + the signal. Call it before any thread starts:
 /// the threads inherit the blocked signals, which one watching thread takes with sigwait(). A

@@ -418,18 +418,8 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
     return built;
   }
 
-  char pattern[] = "/tmp/opspace-build-XXXXXX";
-  if (!mkdtemp(pattern)) throw std::runtime_error("cannot create a build folder in /tmp");
-  const std::string work = pattern;
-  track_folder(work);
-  struct Cleanup {
-    std::string dir;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(dir, ec);
-      forget_folder(dir);
-    }
-  } cleanup{work};
+  const TemporaryFolder folder("/tmp/opspace-build-");
+  const std::string& work = folder.path();
   const std::string file = fs::path(shown_as).filename().string();
   const std::string work_file = work + "/" + file;
   std::ofstream(work_file, std::ios::binary) << text;
