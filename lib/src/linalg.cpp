@@ -1,3 +1,7 @@
+// The linear algebra the library's algorithms share: argument checks, the SVD and the symmetric
+// pseudo-inverse. The generalized inverses of problem 1a are in generalized_inverses.cpp, apart:
+// a runner that calls one of these (allowed everywhere) never links an answer of problem 1a
+// (docs/grader.md, "The library's own answers").
 #include "opspace/linalg.hpp"
 
 #include <limits>
@@ -67,19 +71,6 @@ Svd svd(const Eigen::Ref<const Eigen::MatrixXd>& M, unsigned int options) {
   return out;
 }
 
-Eigen::MatrixXd pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J, double tol) {
-  require_finite(J, "pseudo_inverse: J");
-  // J = U S V^T  =>  J+ = V S+ U^T
-  const Svd d = svd(J, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const Eigen::VectorXd& s = d.sigma;
-  const double cutoff = s.size() > 0 ? tol * s(0) : 0.0;
-  Eigen::VectorXd s_inv = Eigen::VectorXd::Zero(s.size());
-  for (Eigen::Index i = 0; i < s.size(); ++i) {
-    if (s(i) > cutoff && s(i) > 0.0) s_inv(i) = 1.0 / s(i);
-  }
-  return (d.V * s_inv.asDiagonal()).lazyProduct(d.U.transpose());
-}
-
 Eigen::MatrixXd symmetric_pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>& M,
                                          double tol) {
   require_finite(M, "symmetric_pseudo_inverse: M");
@@ -97,38 +88,6 @@ Eigen::MatrixXd symmetric_pseudo_inverse(const Eigen::Ref<const Eigen::MatrixXd>
     if (d(i) > cutoff && d(i) > 0.0) d_inv(i) = 1.0 / d(i);
   }
   return (Q * d_inv.asDiagonal()).lazyProduct(Q.transpose());
-}
-
-Eigen::MatrixXd weighted_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J,
-                                 const Eigen::Ref<const Eigen::MatrixXd>& W, double tol) {
-  require_finite(J, "weighted_inverse: J");
-  require_finite(W, "weighted_inverse: W");
-  const Eigen::Index n = J.cols();
-  require_size(W, n, n, "weighted_inverse: W (J is " + size_of(J.rows(), n) + ")");
-  const double scale = W.cwiseAbs().maxCoeff();
-  if (!(W - W.transpose()).isZero(1e-12 * (scale > 0 ? scale : 1.0))) {
-    throw std::invalid_argument("weighted_inverse: W is not symmetric");
-  }
-  Eigen::MatrixXd L = W;
-  if (!detail::cholesky_in_place(L)) {
-    throw std::invalid_argument("weighted_inverse: W is not positive definite");
-  }
-  Eigen::MatrixXd Winv_Jt = J.transpose();
-  detail::cholesky_solve_in_place(L, Winv_Jt);  // W^-1 J^T
-  return Winv_Jt.lazyProduct(symmetric_pseudo_inverse(J.lazyProduct(Winv_Jt), tol));
-}
-
-Eigen::MatrixXd dynamically_consistent_inverse(const Eigen::Ref<const Eigen::MatrixXd>& J,
-                                               const Eigen::Ref<const Eigen::MatrixXd>& A,
-                                               double tol) {
-  return weighted_inverse(J, A, tol);
-}
-
-Eigen::MatrixXd nullspace_projector(const Eigen::Ref<const Eigen::MatrixXd>& J,
-                                    const Eigen::Ref<const Eigen::MatrixXd>& J_inv) {
-  require_size(J_inv, J.cols(), J.rows(),
-               "nullspace_projector: J_inv (J is " + size_of(J.rows(), J.cols()) + ")");
-  return Eigen::MatrixXd::Identity(J.cols(), J.cols()) - J_inv.lazyProduct(J);
 }
 
 }  // namespace opspace

@@ -13,14 +13,6 @@ namespace {
 
 using Eigen::Index;
 
-Index checked(Index value, Index max, const char* what) {
-  if (value < 1 || value > max) {
-    throw std::invalid_argument(std::string("TaskSpace: ") + what + " is " + std::to_string(value) +
-                                ", expected 1 to " + std::to_string(max));
-  }
-  return value;
-}
-
 // The kernels below work on matrices whose sizes are template parameters: the factorisations
 // are plain loops, the products Eigen's coefficient-based lazy products. For the task shapes
 // of the course (6 x 7, 3 x 6, 3 x 3) the compiler unrolls and vectorises both, where Eigen's
@@ -159,17 +151,6 @@ void operational_space_sized(const Eigen::Ref<const Eigen::MatrixXd>& A_in,
 }
 
 }  // namespace
-
-TaskSpace::TaskSpace(Eigen::Index task_dim, Eigen::Index dof)
-    : Lambda(checked(task_dim, kMaxTaskDim, "the task dimension"), task_dim),
-      Jbar(checked(dof, kMaxDof, "the number of joints"), task_dim),
-      N(dof, dof),
-      p(task_dim),
-      Ainv_Jt(dof, task_dim),
-      Lambda_inv(task_dim, task_dim),
-      eigenvectors(task_dim, task_dim),
-      eigenvalues(task_dim),
-      inverse_eigenvalues(task_dim) {}
 
 void operational_space(const Eigen::Ref<const Eigen::MatrixXd>& A,
                        const Eigen::Ref<const Eigen::MatrixXd>& J,

@@ -1,11 +1,11 @@
 // libFuzzer target: the grader's reading of what a runner sends (tests/graded/trusted/
-// answers.cpp, runner_process.cpp's sanitize()): arbitrary bytes as the answer to a request.
+// answers.cpp, student_text.cpp's student_line()): arbitrary bytes as the answer to a request.
 // Input: one byte choosing the function asked (of the 22), then a 16-byte answer header, then
 // the payload. check_answer() must accept only a header for request 1 with the exact size of
 // that function's value (or an exception text of at most 400 bytes); decode_answer() must
 // decode every payload of the right size or refuse it with DecodeError (a true/false byte that
-// is neither 0 nor 1); an exception text, sanitized, must hold no control character but newline
-// and tab and stay within its limit. Anything else (another exception, a sanitizer report, a
+// is neither 0 nor 1); an exception text, as the report shows it, must be one line of printable
+// ASCII (everything else escaped) within its limit. Anything else (another exception, a sanitizer report, a
 // hang, an allocation the size of a header's claim) is a finding.
 // Seeds: tests/fuzz/seeds/protocol (well-formed answers of several functions).
 #include <cstddef>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "answers.hpp"
+#include "student_text.hpp"
 #include "protocol/codec.hpp"
 #include "runner_process.hpp"
 
@@ -60,12 +61,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case grading::AnswerKind::kException: {
       require(header.size <= opspace::protocol::kMaxExceptionText, "an exception text over its limit was accepted");
       const std::string text(payload.begin(), payload.begin() + std::min<std::size_t>(payload.size(), header.size));
-      const std::string shown = grading::sanitize(text, 200, text.size());
+      const std::string shown = grading::student_line(text, 200, text.size());
+      // The fuzzer's bytes are ASCII or invalid UTF-8 or code points the report escapes, or
+      // printable code points above U+009F: a byte below 0x20 or DEL would be a finding.
       for (const char c : shown) {
         const auto u = static_cast<unsigned char>(c);
-        require(!((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f), "a control character reached the report");
+        require(u >= 0x20 && u != 0x7f, "a control character or a newline reached the report");
       }
-      require(shown.size() <= 200 + 64, "an exception text was not cut short");
+      // Each byte shown takes at most 4 characters (\xff), plus the quotes and the cut note.
+      require(shown.size() <= 4 * 200 + 64, "an exception text was not cut short");
+      // Nor a C1 control (U+0080-9F), a bidirectional override or isolate, U+2028 or U+2029.
+      for (std::size_t i = 0; i + 1 < shown.size(); ++i) {
+        const auto b0 = static_cast<unsigned char>(shown[i]), b1 = static_cast<unsigned char>(shown[i + 1]);
+        require(!(b0 == 0xc2 && b1 >= 0x80 && b1 <= 0x9f), "a C1 control reached the report");
+        require(!(b0 == 0xd8 && b1 == 0x9c), "the Arabic letter mark reached the report");
+        if (b0 == 0xe2 && b1 == 0x80 && i + 2 < shown.size()) {
+          const auto b2 = static_cast<unsigned char>(shown[i + 2]);
+          require(!(b2 >= 0xa8 && b2 <= 0xae) && b2 != 0x8e && b2 != 0x8f, "a line separator or bidi mark reached the report");
+        }
+        if (b0 == 0xe2 && b1 == 0x81 && i + 2 < shown.size()) {
+          const auto b2 = static_cast<unsigned char>(shown[i + 2]);
+          require(!(b2 >= 0xa6 && b2 <= 0xa9), "a bidi isolate reached the report");
+        }
+      }
       return 0;
     }
     case grading::AnswerKind::kValue:

@@ -6,10 +6,11 @@ cmake_minimum_required(VERSION 3.22)
 #   - the grader exited 0 and results.json is valid and unchanged since the grader exited;
 #   - nothing wrote @WORK@/pwned or @WORK@/flood.bin (outside the sandbox);
 #   - each problem in SCORES ("1b=0;1a=23") earned exactly that;
-#   - the report matches EXPECT and does not match FORBID (regular expressions).
+#   - the report matches EXPECT; neither it nor results.json's texts match FORBID (regular
+#     expressions) or hold a byte sequence of FORBID_BYTES (hexadecimal, ","-separated).
 # Cases with ISOLATED=ON need the sandbox's private file view: skipped (SKIPPED:) without it.
 #   cmake -DGRADER=hw2-grade-sol -DSOLUTIONS=solutions -DCASE=cases/x.cpp [-DTARGET=p1b.cpp]
-#         -DWORK=dir -DREPO=root [-DTIMEOUT=seconds per test, 5] [-DPROBLEM=1b] [-DSCORES=...] [-DEXPECT=...] [-DFORBID=...]
+#         -DWORK=dir -DREPO=root [-DTIMEOUT=seconds per test, 5] [-DPROBLEM=1b] [-DSCORES=...] [-DEXPECT=...] [-DFORBID=...] [-DFORBID_BYTES=e280a8,ff]
 #         [-DFAULT=...] [-DISOLATED=ON] [-DGRADER_ARGS=--no-isolation] -P run_case.cmake
 # (GRADER_ARGS=--no-isolation turns the sandbox off: then the attacks succeed, which shows
 # that the cases can fail.)
@@ -65,11 +66,34 @@ endif()
 if(DEFINED FORBID AND out MATCHES "${FORBID}")
   message(FATAL_ERROR "the report says '${FORBID}', which it must not:\n${out}")
 endif()
-
-# Scores per problem, from results.json (tests are named "<key> ...").
+# results.json's texts, decoded, must not say it either: Gradescope shows them to the student.
 file(READ "${RESULTS_JSON}" json)
+string(JSON shown GET "${json}" output)
 string(JSON count LENGTH "${json}" tests)
 math(EXPR last "${count} - 1")
+foreach(i RANGE ${last})
+  string(JSON text GET "${json}" tests ${i} output)
+  string(APPEND shown "\n${text}")
+endforeach()
+if(DEFINED FORBID AND shown MATCHES "${FORBID}")
+  message(FATAL_ERROR "results.json says '${FORBID}', which it must not:\n${shown}")
+endif()
+# FORBID_BYTES: hexadecimal byte sequences (a bidi override, U+2028, a C1 control, an invalid
+# UTF-8 byte) that must appear neither in the report nor in results.json, at any byte offset.
+if(DEFINED FORBID_BYTES)
+  string(REPLACE "," ";" FORBID_BYTES "${FORBID_BYTES}")
+  file(WRITE "${WORK}/report.txt" "${out}")
+  foreach(where "${WORK}/report.txt" "${RESULTS_JSON}")
+    file(READ "${where}" bytes HEX)
+    foreach(sequence IN LISTS FORBID_BYTES)
+      if(bytes MATCHES "^(..)*${sequence}")
+        message(FATAL_ERROR "${where} holds the bytes ${sequence} raw, which the grader must show escaped:\n${out}")
+      endif()
+    endforeach()
+  endforeach()
+endif()
+
+# Scores per problem, from results.json (tests are named "<key> ...").
 string(REPLACE "," ";" SCORES "${SCORES}")
 foreach(expectation IN LISTS SCORES)
   string(REGEX MATCH "^([^=]+)=(.+)$" _ "${expectation}")

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "grader.hpp"
+#include "student_text.hpp"
 
 namespace opspace::grading {
 
@@ -48,7 +49,7 @@ std::string feedback(const TestResult& r) {
   std::string text;
   for (const std::string& f : r.findings) text += "- " + f + "\n";
   if (r.score < r.test->points && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";
-  if (!r.printed.empty()) text += "your code printed:\n" + r.printed + "\n";
+  if (!r.printed.empty()) text += "your code printed:\n" + quote_block(r.printed, "");
   return text;
 }
 
@@ -69,8 +70,12 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
     score += p.score;
     max_score += p.max_score;
     summary << "Problem " << p.problem->key << ": " << p.score << " / " << p.max_score << "\n";
-    if (!p.failure.empty()) summary << "  " << p.failure << "\n";
-    if (!p.warnings.empty()) summary << "  compiler warnings:\n" << p.warnings << "\n";
+    if (!p.failure.empty()) {
+      const std::size_t end = p.failure.find('\n');
+      summary << "  " << p.failure.substr(0, end) << "\n";
+      if (end != std::string::npos) summary << quote_block(p.failure.substr(end + 1), "    ");
+    }
+    if (!p.warnings.empty()) summary << "  compiler warnings:\n" << quote_block(p.warnings, "    ");
   }
   out.precision(10);
   out << "{\n  \"score\": " << score << ",\n  \"max_score\": " << max_score

@@ -21,6 +21,7 @@
 #include "runner_build.hpp"
 #include "runner_process.hpp"
 #include "sandbox.hpp"
+#include "student_text.hpp"
 #include "suite.hpp"
 
 namespace opspace::grading {
@@ -135,22 +136,35 @@ ProblemResult not_built(const Problem& problem, const BuiltRunner& built) {
   return out;
 }
 
-// Tests answered by a library oracle the student's file calls earn nothing.
+// Tests answered by a library answer the runner holds earn nothing; the note names the answer,
+// what it costs and why (library_answers.hpp).
 void apply_oracles(ProblemResult& result, const BuiltRunner& built) {
   for (const Oracle& oracle : built.called) {
-    std::string call;
-    for (const std::string& c : built.calls)
-      if (c.rfind(oracle.prefix, 0) == 0) call = c;
-    result.notes.push_back("exercises/" + file_of(result.problem->key) + " calls " + call + ", which computes " +
-                           oracle.what + ": the tests it answers earn 0. Write it yourself (docs/grader.md)");
+    std::string names;
+    int named = 0, more = 0;
+    for (const std::string& owner : built.answers) {
+      if (!belongs_to(owner, oracle)) continue;
+      if (named++ < 3) names += (names.empty() ? "" : ", ") + escape_student_text(owner, false, false);
+      else ++more;
+    }
+    if (more > 0) names += " and " + std::to_string(more) + " more";
+    int tests = 0;
+    double points = 0.0;
     for (TestResult& r : result.results) {
       const bool answered = oracle.tests.empty() ||
                             std::find(oracle.tests.begin(), oracle.tests.end(), r.test->name) != oracle.tests.end();
       if (!answered) continue;
+      ++tests;
+      points += r.test->points;
       r.score = 0.0;
-      r.findings.insert(r.findings.begin(), "uses the library's own answer " + oracle.prefix + "...: not counted");
+      r.findings.insert(r.findings.begin(), "uses the library's own answer " + oracle.name + ": not counted");
       r.interrupted = true;
     }
+    char cost[64];
+    std::snprintf(cost, sizeof cost, "the %d test%s it answers (%g points)", tests, tests == 1 ? "" : "s", points);
+    result.notes.push_back("not allowed in problem " + result.problem->key + ": exercises/" + file_of(result.problem->key) +
+                           " reaches " + names + ", which computes " + oracle.what + ": " + cost +
+                           " earn 0. Write it yourself (docs/grader.md)");
   }
   result.score = 0.0;
   for (const TestResult& r : result.results) result.score += r.score;

@@ -9,6 +9,7 @@
 #include "diagnosis.hpp"
 #include "mistakes.hpp"
 #include "runner_process.hpp"
+#include "student_text.hpp"
 
 namespace opspace::grading {
 
@@ -126,7 +127,7 @@ TestResult run_test(const GradedTest& test, const Hw2Api& api) {
     result.findings = {e.what()};
     result.interrupted = true;
   } catch (const std::exception& e) {
-    result.findings = {std::string("your code threw an exception: ") + e.what()};
+    result.findings = {std::string("your code threw an exception: ") + student_line(e.what(), 200, std::string(e.what()).size())};
   } catch (...) {
     result.findings = {"your code threw an exception that is not a std::exception"};
   }
@@ -185,7 +186,7 @@ std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw
         result.interrupted = true;
       }
       const Printed printed = runner->end_test();
-      if (printed.total > 0) result.printed = sanitize(printed.text, RunnerProcess::kMaxPrinted, printed.total);
+      if (printed.total > 0) result.printed = student_block(printed.text, RunnerProcess::kMaxPrinted, printed.total);
     }
     if (catalogue && result.score < test.points && !result.interrupted) {
       const std::string likely = diagnose(*catalogue, test.name, recording);

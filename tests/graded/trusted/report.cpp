@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include "student_text.hpp"
+
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -14,16 +16,15 @@ std::string points(double value) {
   return buffer;
 }
 
-// Text from the student's code or the compiler, each line behind "| " so that it can never
-// pass for a line of the report.
-std::string quoted(std::string text) {
-  while (!text.empty() && text.back() == '\n') text.pop_back();
-  std::string out = "            | ";
-  for (const char c : text) {
-    out += c;
-    if (c == '\n') out += "            | ";
-  }
-  return out + "\n";
+// What the student's side wrote (already escaped: student_text.hpp), each line behind "| " so
+// that it can never pass for a line of the report.
+std::string quoted(const std::string& text) { return quote_block(text, "            "); }
+
+// A build failure: the grader's line, then the lines of the student's file it quotes.
+void print_failure(std::ostream& out, const std::string& failure) {
+  const std::size_t end = failure.find('\n');
+  out << "  ! " << failure.substr(0, end) << "\n";
+  if (end != std::string::npos) out << quoted(failure.substr(end + 1));
 }
 
 std::string status(const TestResult& r) {
@@ -58,7 +59,7 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems)
       }
       if (!r.printed.empty()) out << "          your code printed:\n" << quoted(r.printed);
     }
-    if (!p.failure.empty()) out << "  ! " << p.failure << "\n";
+    if (!p.failure.empty()) print_failure(out, p.failure);
     for (const std::string& note : p.notes) out << "  ! " << note << "\n";
     if (!p.warnings.empty()) out << "  compiler warnings (not counted):\n" << quoted(p.warnings);
     out << "  Problem " << p.problem->key << ": " << points(p.score) << " / " << points(p.max_score)

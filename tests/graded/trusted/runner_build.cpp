@@ -17,9 +17,11 @@
 #include <stdexcept>
 
 #include "interrupt.hpp"
+#include "library_answers.hpp"
 #include "runner_process.hpp"
 #include "sandbox.hpp"
 #include "sha256.hpp"
+#include "student_text.hpp"
 
 namespace opspace::grading {
 
@@ -30,16 +32,19 @@ namespace {
 constexpr std::size_t kMaxSource = 1u << 20;     // an exercise file is a few kilobytes
 constexpr std::size_t kMaxToolOutput = 1u << 16;  // what is kept of the compiler's output
 constexpr std::size_t kMaxWarnings = 1500;        // what the report shows of the warnings
+constexpr std::size_t kMaxSymbolList = 64u << 20;  // nm of a runner: 5-15 kB (--gc-sections)
 
 struct CommandResult {
   bool timed_out = false;
   int status = 0;
-  std::string output;  // stdout and stderr, at most kMaxToolOutput bytes
+  std::string output;  // stdout and stderr, at most the limit given to run_tool
+  bool cut = false;    // the output was longer than that
 };
 
 // Runs argv in the sandbox (work_dir writable), with a time limit, capturing its output.
 CommandResult run_tool(const std::vector<std::string>& argv, const std::string& work_dir,
-                       const std::vector<std::string>& visible, const BuildSettings& settings) {
+                       const std::vector<std::string>& visible, const BuildSettings& settings,
+                       std::size_t max_output = kMaxToolOutput) {
   int out[2];
   if (pipe2(out, O_CLOEXEC) != 0) throw std::runtime_error("the grader could not create a pipe");
   SandboxSpec spec;
@@ -88,8 +93,9 @@ CommandResult run_tool(const std::vector<std::string>& argv, const std::string& 
     const ssize_t n = read(out[0], buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
-    if (result.output.size() < kMaxToolOutput)
-      result.output.append(buffer, std::min<std::size_t>(static_cast<std::size_t>(n), kMaxToolOutput - result.output.size()));
+    const std::size_t room = max_output - result.output.size();
+    result.cut = result.cut || static_cast<std::size_t>(n) > room;
+    result.output.append(buffer, std::min<std::size_t>(static_cast<std::size_t>(n), room));
   }
   close(out[0]);
   if (result.timed_out || !wait_until(program, deadline, result.status)) {
@@ -122,11 +128,13 @@ std::string replace_all(std::string text, const std::string& from, const std::st
   return text;
 }
 
-// "p1b.cpp:12:5: error: ..." and the source line below it, with the work folder's name of the
-// file replaced by the name the student knows. Errors located in other files are shown only
-// if those files are public headers (an include root).
+// The compiler's first error, "p1b.cpp:12:5: error: ...", and the source line below it, with
+// the work folder's name of the file replaced by the name the student knows, as a grader line
+// and the compiler's own lines quoted below it (student_text.hpp: they quote the student's
+// code). Errors located in other files are shown only if those files are public headers (an
+// include root). Empty if the output holds no error.
 std::string first_error(const std::string& output, const std::string& work_file, const std::string& shown_as,
-                        const std::vector<std::string>& include_roots) {
+                        const std::vector<std::string>& include_roots, const std::string& tool) {
   const std::vector<std::string> all = lines(output);
   for (std::size_t i = 0; i < all.size(); ++i) {
     const std::string& line = all[i];
@@ -148,7 +156,7 @@ std::string first_error(const std::string& output, const std::string& work_file,
       shown = shown_as + ": " + shown.substr(at);
     }
     if (in_student_file && i + 1 < all.size() && !all[i + 1].empty() && all[i + 1][0] == ' ') shown += "\n" + all[i + 1];
-    return sanitize(shown, 600, shown.size());
+    return shown_as + ": the " + tool + "'s first error:\n" + student_block(shown, 600, shown.size());
   }
   return "";
 }
@@ -159,7 +167,7 @@ std::string warnings_of(const std::string& output, const std::string& work_file,
     if (line.find(" warning: ") == std::string::npos) continue;
     out += replace_all(line, work_file, shown_as) + "\n";
   }
-  return out.empty() ? out : sanitize(out, kMaxWarnings, out.size());
+  return out.empty() ? out : student_block(out, kMaxWarnings, out.size());
 }
 
 // The files a compilation read, from its dependency file (make syntax: "target: dep dep \").
@@ -204,7 +212,7 @@ std::string check_includes(const std::string& depfile, const std::string& work_d
     bool allowed = false;
     for (const std::string& root : roots) allowed = allowed || under(path, root);
     if (!allowed) {
-      return shown_as + " includes " + sanitize(dep, 200, dep.size()) +
+      return shown_as + " includes " + student_line(dep, 200, dep.size()) +
              ": an exercise may include only the library's headers (<opspace/...>), Eigen and the standard library";
     }
   }
@@ -282,7 +290,7 @@ void save_report(const std::string& path, const BuiltRunner& built) {
   const std::string tmp = temporary(path);
   std::ofstream out(tmp);
   out << built.warnings.size() << "\n" << built.warnings << "\n";
-  for (const std::string& call : built.calls) out << call << "\n";
+  for (const std::string& answer : built.answers) out << answer << "\n";
   out.close();
   fs::rename(tmp, path);
 }
@@ -296,23 +304,17 @@ bool load_report(const std::string& path, BuiltRunner& built) {
   in.read(built.warnings.data(), static_cast<std::streamsize>(size));
   in.get();
   for (std::string line; std::getline(in, line);)
-    if (!line.empty()) built.calls.push_back(line);
+    if (!line.empty()) built.answers.push_back(line);
   return true;
 }
 
+// The oracles of problem `key` that the answers found belong to.
 void match_oracles(const std::string& key, BuiltRunner& built) {
   for (const Oracle& oracle : oracles(key)) {
-    const bool called = std::any_of(built.calls.begin(), built.calls.end(),
-                                    [&](const std::string& c) { return c.rfind(oracle.prefix, 0) == 0; });
-    if (called) built.called.push_back(oracle);
+    const bool found = std::any_of(built.answers.begin(), built.answers.end(),
+                                   [&](const std::string& owner) { return belongs_to(owner, oracle); });
+    if (found) built.called.push_back(oracle);
   }
-  // Keep only the calls that belong to an oracle.
-  built.calls.erase(std::remove_if(built.calls.begin(), built.calls.end(),
-                                   [&](const std::string& c) {
-                                     return std::none_of(built.called.begin(), built.called.end(),
-                                                         [&](const Oracle& o) { return c.rfind(o.prefix, 0) == 0; });
-                                   }),
-                    built.calls.end());
 }
 
 }  // namespace
@@ -347,38 +349,6 @@ Toolchain load_toolchain(const std::string& path) {
     throw std::runtime_error(path + ": compile=, link= and nm= are required");
   t.fingerprint = Sha256().add(std::to_string(all.size()) + "\n" + all).add(own_identity()).hex();
   return t;
-}
-
-std::vector<Oracle> oracles(const std::string& key) {
-  // Every problem: the scenarios compute the reference's quantities and laws.
-  std::vector<Oracle> out = {{"opspace::scenarios::", "the scenarios' own trajectories and control laws", {}}};
-  if (key == "1a") {
-    const std::string ginv = "iv. the pseudo-inverse is J^T (J J^T)^-1", split = "vi. J+ shares dx equally between the joints, Jbar moves only joint 2";
-    out.push_back({"opspace::pp::", "the closed forms of problem 1a (lib/include/opspace/pp_robot.hpp)", {}});
-    out.push_back({"opspace::pseudo_inverse(", "J+ (linalg.hpp)", {ginv, split}});
-    out.push_back({"opspace::weighted_inverse(", "J# (linalg.hpp)",
-                   {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1", "vi. the inertia-weighted inverse moves only the light link", split}});
-    out.push_back({"opspace::dynamically_consistent_inverse(", "Jbar (linalg.hpp)",
-                   {"vi. the inertia-weighted inverse moves only the light link", split}});
-    // The operational-space quantities of problems 1b-4 hold Jbar too.
-    out.push_back({"opspace::operational_space(", "Jbar among the operational-space quantities (opspace.hpp)",
-                   {"vi. the inertia-weighted inverse moves only the light link", split}});
-    out.push_back({"opspace::nullspace_projector(", "I - J_inv J (linalg.hpp)",
-                   {"iv. I - J+ J keeps only the self-motions that leave the end-effector still",
-                    "v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector",
-                    "iv-vi. every inverse gives the family dq = J_inv dx + (I - J_inv J) dq0"}});
-  } else if (key == "4") {
-    const std::vector<std::string> analysis = {
-        "i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv",
-        "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv elsewhere",
-        "iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0",
-        "iv. at theta = (0, 90 deg, 0) the elbow lock Z0 is Type I and the overhead lock Y0 Type II",
-        "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one"};
-    for (const char* f : {"opspace::directions(", "opspace::singularity_type(", "opspace::analyse_singularities(",
-                          "opspace::self_motion_curvature(", "opspace::directional_hessian("})
-      out.push_back({f, "the singularity analysis of problem 4 (singularity.hpp)", analysis});
-  }
-  return out;
 }
 
 BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, const std::string& source,
@@ -440,26 +410,22 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
     return built;
   }
   if (!WIFEXITED(cc.status) || WEXITSTATUS(cc.status) != 0) {
-    built.error = first_error(cc.output, work_file, shown_as, roots);
+    built.error = first_error(cc.output, work_file, shown_as, roots, "compiler");
     if (built.error.empty()) built.error = "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")";
     return built;
   }
   built.error = check_includes(work + "/exercise.d", work, shown_as, roots);
   if (!built.error.empty()) return built;
 
-  // Which library functions it calls: the object's undefined symbols.
-  const CommandResult nm = run_tool({toolchain.nm, "-C", "--undefined-only", "-P", work + "/exercise.o"}, work, {},
-                                    settings);
-  if (nm.timed_out || !WIFEXITED(nm.status) || WEXITSTATUS(nm.status) != 0) {
-    built.error = "the grader could not list the functions " + shown_as + " calls";
+  // The answers the file refers to, by any kind of reference ("U", or "w" and "v" for a weak or
+  // aliased declaration, which pull nothing into the link but name what the file reaches for).
+  const CommandResult refs = run_tool({toolchain.nm, "-C", "-P", "--undefined-only", work + "/exercise.o"}, work, {},
+                                      settings, kMaxSymbolList);
+  if (refs.timed_out || !WIFEXITED(refs.status) || WEXITSTATUS(refs.status) != 0 || refs.cut) {
+    built.error = "the grader could not list the functions " + shown_as + " refers to";
     return built;
   }
-  for (const std::string& line : lines(nm.output)) {
-    // -P: "NAME TYPE [VALUE SIZE]"; NAME may hold spaces when demangled, TYPE is "U".
-    const std::size_t at = line.rfind(" U");
-    if (at != std::string::npos) built.calls.push_back(line.substr(0, at));
-  }
-  match_oracles(key, built);
+  built.answers = answers_among(key, symbol_names(refs.output));
 
   // Link with the problem's runner loop and the library.
   std::vector<std::string> link = toolchain.link;
@@ -468,11 +434,23 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   link.insert(link.end(), {"-o", work + "/runner"});
   const CommandResult ld = run_tool(link, work, {}, settings);
   if (ld.timed_out || !WIFEXITED(ld.status) || WEXITSTATUS(ld.status) != 0) {
-    built.error = first_error(ld.output, work + "/exercise.o", shown_as, roots);
+    built.error = first_error(ld.output, work + "/exercise.o", shown_as, roots, "linker");
     if (built.error.empty()) built.error = "linking the runner of " + shown_as + " failed";
     built.error = "linking failed: " + built.error;
     return built;
   }
+  // What the runner holds of the library's answers, by whatever route they came in: its own
+  // symbols (library_answers.hpp). nm's output is kept whole or not at all: a cut list could
+  // hide an answer, so a runner whose list is too long is refused.
+  const CommandResult nm = run_tool({toolchain.nm, "-C", "-P", "--defined-only", work + "/runner"}, work, {}, settings,
+                                    kMaxSymbolList);
+  if (nm.timed_out || !WIFEXITED(nm.status) || WEXITSTATUS(nm.status) != 0 || nm.cut) {
+    built.error = "the grader could not list what the runner of " + shown_as + " holds";
+    return built;
+  }
+  for (const std::string& answer : answers_among(key, symbol_names(nm.output)))
+    if (std::find(built.answers.begin(), built.answers.end(), answer) == built.answers.end()) built.answers.push_back(answer);
+  match_oracles(key, built);
   const std::string tmp = temporary(cached);
   fs::copy_file(work + "/runner", tmp, fs::copy_options::overwrite_existing);
   fs::permissions(tmp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |

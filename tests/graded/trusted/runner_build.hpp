@@ -1,12 +1,14 @@
 /// @file runner_build.hpp
 /// Building a problem's runner from one exercise file, in the sandbox: compile (the student's
-/// warnings shown, never fatal), check what the file included and which library functions it
-/// calls, link with that problem's runner loop. A failure costs that problem only and is
+/// warnings shown, never fatal), check what the file included, link with that problem's runner
+/// loop, and list which of the library's answers the runner holds (library_answers.hpp). A failure costs that problem only and is
 /// reported with the file, the line and the compiler's first error.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "library_answers.hpp"
 
 namespace opspace::grading {
 
@@ -25,17 +27,6 @@ struct Toolchain {
 /// Reads the toolchain file. Throws std::runtime_error naming the file and line on bad input.
 Toolchain load_toolchain(const std::string& path);
 
-/// A library function that computes an answer the student must write: calling it costs the
-/// tests listed.
-struct Oracle {
-  std::string prefix;              ///< start of the demangled name, e.g. "opspace::pp::"
-  std::string what;                ///< what it computes, for the report
-  std::vector<std::string> tests;  ///< names of the tests it answers (empty: all of the problem's)
-};
-
-/// The oracles of problem `key` (docs/grader.md lists them for students).
-std::vector<Oracle> oracles(const std::string& key);
-
 /// Where and how to build.
 struct BuildSettings {
   std::string cache_dir;   ///< built runners are kept here, by the hash of their inputs
@@ -50,8 +41,8 @@ struct BuiltRunner {
   std::string binary;                 ///< the runner (in the cache), when ok
   std::string error;                  ///< why not: "exercises/p1b.cpp:12: error: ..."
   std::string warnings;               ///< the compiler's warnings, cut short
-  std::vector<std::string> calls;     ///< forbidden calls: "opspace::pp::mass_matrix(double, double)"
-  std::vector<Oracle> called;         ///< the oracles those calls belong to
+  std::vector<std::string> answers;   ///< library answers the runner holds: "opspace::pp::mass_matrix"
+  std::vector<Oracle> called;         ///< the oracles they belong to
   bool cached = false;                ///< reused from an earlier build of the same inputs
 };
 

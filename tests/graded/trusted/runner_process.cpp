@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include "answers.hpp"
+#include "student_text.hpp"
 
 namespace opspace::grading {
 
@@ -45,16 +46,6 @@ std::string seconds(double s) {
 }
 
 }  // namespace
-
-std::string sanitize(const std::string& text, std::size_t limit, std::size_t total) {
-  std::string out = text.substr(0, limit);
-  for (char& c : out) {
-    const auto u = static_cast<unsigned char>(c);
-    if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) c = '?';
-  }
-  if (total > out.size()) out += "\n[... " + std::to_string(total - out.size()) + " more bytes not shown]";
-  return out;
-}
 
 RunnerProcess::RunnerProcess(RunnerConfig config) : config_(std::move(config)) {}
 
@@ -202,7 +193,7 @@ std::vector<unsigned char> RunnerProcess::call(protocol::Function function, cons
     case AnswerKind::kException: {
       std::string text(answer.size, '\0');
       read_answer(text.data(), text.size());
-      throw StudentException("your code threw an exception: " + sanitize(text, 200, text.size()));
+      throw StudentException("your code threw an exception: " + student_line(text, 200, text.size()));
     }
     case AnswerKind::kValue: break;
   }

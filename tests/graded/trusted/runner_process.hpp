@@ -96,8 +96,4 @@ class RunnerProcess {
   int starts_ = 0;
 };
 
-/// Text the student's code produced, made safe to show: control characters (but newlines and
-/// tabs) become '?', and it is cut to `limit` bytes with a note of what was left out.
-std::string sanitize(const std::string& text, std::size_t limit, std::size_t total);
-
 }  // namespace opspace::grading

@@ -1,0 +1,132 @@
+#include "library_answers.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+namespace opspace::grading {
+
+namespace {
+
+bool is_hex(const std::string& word) {
+  return !word.empty() && std::all_of(word.begin(), word.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+}
+
+// The length of the operator's name at s[i] ("operator<<", "operator()"), or 0 if none starts
+// there. Its '<', '>' and '(' are not template brackets or a parameter list.
+std::size_t operator_length(const std::string& s, std::size_t i) {
+  static const std::string kOperator = "operator";
+  if (s.compare(i, kOperator.size(), kOperator) != 0) return 0;
+  if (i > 0 && s[i - 1] != ':' && s[i - 1] != ' ') return 0;
+  const std::size_t after = i + kOperator.size();
+  if (after < s.size() && (std::isalnum(static_cast<unsigned char>(s[after])) || s[after] == '_')) return 0;
+  for (const char* token : {"()", "[]", "<<=", ">>=", "<=>", "->*", "<<", ">>", "<=", ">=", "->", "<", ">"}) {
+    const std::string t = token;
+    if (s.compare(after, t.size(), t) == 0) return kOperator.size() + t.size();
+  }
+  return kOperator.size();
+}
+
+}  // namespace
+
+std::vector<Oracle> oracles(const std::string& key) {
+  // Every problem: the scenarios compute the reference's quantities and laws.
+  std::vector<Oracle> out = {{"opspace::scenarios::", "the scenarios' own trajectories and control laws", {}}};
+  if (key == "1a") {
+    const std::string ginv = "iv. the pseudo-inverse is J^T (J J^T)^-1", split = "vi. J+ shares dx equally between the joints, Jbar moves only joint 2";
+    const std::string jbar = "vi. the inertia-weighted inverse moves only the light link";
+    out.push_back({"opspace::pp::", "the closed forms of problem 1a (lib/include/opspace/pp_robot.hpp)", {}});
+    out.push_back({"opspace::pseudo_inverse", "J+ (linalg.hpp)", {ginv, split}});
+    out.push_back({"opspace::weighted_inverse", "J# (linalg.hpp)",
+                   {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1", jbar, split}});
+    out.push_back({"opspace::dynamically_consistent_inverse", "Jbar (linalg.hpp)", {jbar, split}});
+    // The operational-space quantities of problems 1b-4 hold Jbar too.
+    out.push_back({"opspace::operational_space", "Jbar among the operational-space quantities (opspace.hpp)", {jbar, split}});
+    out.push_back({"opspace::nullspace_projector", "I - J_inv J (linalg.hpp)",
+                   {"iv. I - J+ J keeps only the self-motions that leave the end-effector still",
+                    "v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector",
+                    "iv-vi. every inverse gives the family dq = J_inv dx + (I - J_inv J) dq0"}});
+  } else if (key == "4") {
+    const std::vector<std::string> analysis = {
+        "i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv",
+        "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv elsewhere",
+        "iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0",
+        "iv. at theta = (0, 90 deg, 0) the elbow lock Z0 is Type I and the overhead lock Y0 Type II",
+        "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one"};
+    for (const char* f : {"opspace::directions", "opspace::singularity_type", "opspace::analyse_singularities",
+                          "opspace::self_motion_curvature", "opspace::directional_hessian"})
+      out.push_back({f, "the singularity analysis of problem 4 (singularity.hpp)", analysis});
+  }
+  return out;
+}
+
+std::string owner_name(const std::string& s) {
+  static const std::string kAnonymous = "(anonymous namespace)";
+  // The text outside template brackets, up to the parameter list.
+  std::string kept;
+  int depth = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (depth == 0) {
+      if (const std::size_t n = operator_length(s, i)) {
+        kept += s.substr(i, n);
+        i += n - 1;
+        continue;
+      }
+      if (s.compare(i, kAnonymous.size(), kAnonymous) == 0) {
+        kept += "{anonymous}";
+        i += kAnonymous.size() - 1;
+        continue;
+      }
+    }
+    const char c = s[i];
+    if (c == '<') ++depth;
+    else if (c == '>') depth = std::max(0, depth - 1);
+    else if (depth == 0 && c == '(') break;
+    else if (depth == 0) kept += c;
+  }
+  // The last word: a return type and "vtable for ", "guard variable for " come before it.
+  while (!kept.empty() && kept.back() == ' ') kept.pop_back();
+  const std::size_t space = kept.rfind(' ');
+  return space == std::string::npos ? kept : kept.substr(space + 1);
+}
+
+std::vector<std::string> symbol_names(const std::string& nm_output) {
+  // POSIX format: "NAME TYPE [VALUE [SIZE]]", where a demangled NAME may hold spaces.
+  std::vector<std::string> out;
+  std::istringstream in(nm_output);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> words;
+    std::istringstream split(line);
+    for (std::string w; split >> w;) words.push_back(w);
+    const std::size_t n = words.size();
+    std::size_t fields = 0;  // TYPE and what follows it
+    if (n >= 4 && words[n - 3].size() == 1 && is_hex(words[n - 2]) && is_hex(words[n - 1])) fields = 3;
+    else if (n >= 3 && words[n - 2].size() == 1 && is_hex(words[n - 1])) fields = 2;
+    else if (n >= 2 && words[n - 1].size() == 1) fields = 1;
+    if (fields == 0) continue;
+    std::string name;
+    for (std::size_t k = 0; k + fields < n; ++k) name += (k ? " " : "") + words[k];
+    out.push_back(name);
+  }
+  return out;
+}
+
+bool belongs_to(const std::string& owner, const Oracle& oracle) {
+  const std::string& name = oracle.name;
+  if (name.size() >= 2 && name.compare(name.size() - 2, 2, "::") == 0) return owner.rfind(name, 0) == 0;
+  return owner == name || owner.rfind(name + "::", 0) == 0;
+}
+
+std::vector<std::string> answers_among(const std::string& key, const std::vector<std::string>& symbols) {
+  const std::vector<Oracle> forbidden = oracles(key);
+  std::vector<std::string> out;
+  for (const std::string& symbol : symbols) {
+    const std::string owner = owner_name(symbol);
+    const bool answer = std::any_of(forbidden.begin(), forbidden.end(), [&](const Oracle& o) { return belongs_to(owner, o); });
+    if (answer && std::find(out.begin(), out.end(), owner) == out.end()) out.push_back(owner);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace opspace::grading
