@@ -1,0 +1,27 @@
+/// @file build_tool.hpp
+/// A tool of the runner's build (the compiler, the linker, nm) run in the sandbox on the
+/// student's file: its output captured up to a limit, within the build's time limit.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "runner_build.hpp"
+
+namespace opspace::grading {
+
+/// What a tool did.
+struct ToolResult {
+  bool timed_out = false;
+  int status = 0;      ///< its wait status
+  std::string output;  ///< stdout and stderr, at most the limit given to run_tool
+  bool cut = false;    ///< the output was longer than that
+};
+
+/// Runs `argv` in the sandbox as `settings` says (`work_dir` writable), within
+/// settings.timeout, keeping at most `max_output` bytes of what it writes.
+ToolResult run_tool(const std::vector<std::string>& argv, const std::string& work_dir, const BuildSettings& settings,
+                    std::size_t max_output);
+
+}  // namespace opspace::grading
