@@ -49,6 +49,15 @@ fi
 say "g++ $(g++ -dumpfullversion), cmake $(cmake --version | head -1 | cut -d' ' -f3), bullet $(pkg-config --modversion bullet-float64)"
 
 # --- 2. build ---------------------------------------------------------------------------------
+# A compiler launcher named in the environment (CI's ccache, tests/deploy/autograder.sh) is used
+# when it is installed; Gradescope names none.
+if [ -n "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]; then
+  if command -v "$CMAKE_CXX_COMPILER_LAUNCHER" > /dev/null 2>&1; then
+    say "compiler launcher: $CMAKE_CXX_COMPILER_LAUNCHER (from the environment)"
+  else
+    unset CMAKE_CXX_COMPILER_LAUNCHER
+  fi
+fi
 jobs=$(nproc)
 cd "$REPO"
 cmake --preset release -DOPSPACE_BUILD_BENCH=OFF -DOPSPACE_BUILD_REPLAY=OFF > "$ROOT/setup-configure.log" ||
