@@ -93,7 +93,7 @@ say "removing the reference, the mutants, the tamper cases and the graded tests'
 rm -rf "$REPO/solutions" "$REPO/tests/mutants" "$REPO/tests/tamper" "$REPO/tests/deploy" \
        "$BUILD/solutions" "$BUILD/tests/mutants" "$BUILD/tests/tamper" "$BUILD/grading-cache" \
        "$BUILD/tests/graded/seed" "$BUILD/tests/graded/CMakeFiles/opspace_graded.dir" "$BUILD/Testing"
-rm -f "$REPO"/tests/graded/trusted/*.cpp "$BUILD"/tests/graded/*.json
+rm -f "$REPO"/tests/graded/*.cpp "$BUILD"/tests/graded/*.json
 find "$BUILD" -name '*-sol' -type f -delete
 find "$BUILD" \( -name '*-sol.dir' -o -name 'opspace_solutions.dir' \) -type d -prune -exec rm -rf {} +
 # What remains (the library, the grader, its runner loops, the stubs) is root's alone: the
@@ -105,10 +105,10 @@ chmod go= "$ROOT"/run_autograder "$ROOT"/setup.sh "$ROOT"/setup-*.log 2> /dev/nu
 # files stay readable (they are the library students have); the folders above them do not.
 while IFS='=' read -r key value; do
   if [ "$key" = visible ] && [ -e "$value" ]; then chmod -R a+rX "$value"; fi
-done < "$BUILD/tests/graded/runner-toolchain.txt"
+done < "$BUILD/grader/runner-toolchain.txt"
 
 # --- 6. prove the lockdown and grade the stubs --------------------------------------------------
-for gone in solutions tests/mutants tests/tamper tests/graded/trusted/p1b.cpp build/release/apps/hw2-grade-sol; do
+for gone in solutions tests/mutants tests/tamper tests/graded/p1b.cpp build/release/apps/hw2-grade-sol; do
   [ ! -e "$REPO/$gone" ] || fail "$REPO/$gone is still there"
 done
 if [ "$(id -u)" -eq 0 ]; then

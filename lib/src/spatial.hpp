@@ -1,6 +1,7 @@
 /// @file spatial.hpp
 /// Spatial (6D) algebra used inside the library, everything in the base frame and about the
-/// base origin O (Featherstone's "spatial vectors at the origin"):
+/// base origin O (R. Featherstone, Rigid Body Dynamics Algorithms, Springer 2008, chapter 2:
+/// Plucker coordinates taken at the base origin):
 ///   motion m = [v_O; w]  (linear velocity of the body point at O, angular velocity),
 ///   force  f = [f; n_O]  (force, moment about O); power = m . f.
 /// Private to lib/src.

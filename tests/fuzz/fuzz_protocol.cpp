@@ -1,4 +1,4 @@
-// libFuzzer target: the grader's reading of what a runner sends (tests/graded/trusted/
+// libFuzzer target: the grader's reading of what a runner sends (tests/graded/
 // answers.cpp, student_text.cpp's student_line()): arbitrary bytes as the answer to a request.
 // Input: one byte choosing the function asked (of the 22), then a 16-byte answer header, then
 // the payload. check_answer() must accept only a header for request 1 with the exact size of

@@ -1,4 +1,4 @@
-// The grader's cache key (tests/graded/trusted/sha256.cpp) against published digests.
+// The grader's cache key (grader/trusted/sha256.cpp) against published digests.
 #include <doctest/doctest.h>
 
 #include <string>

@@ -1,6 +1,9 @@
 /// @file dynamics.hpp
 /// Joint-space dynamics A(q) qdd + b(q, qdot) + g(q) = tau of a Model.
 /// Each function fills its member of Data and returns a reference to it; none allocates.
+/// Source: R. Featherstone, Rigid Body Dynamics Algorithms, Springer 2008 (RBDA): the
+/// recursive Newton-Euler algorithm of section 5.3 and the composite-rigid-body algorithm of
+/// section 6.2, in the spatial algebra of chapter 2 (lib/src/spatial.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -9,7 +12,7 @@
 
 namespace opspace {
 
-/// A(q), the joint-space mass matrix, by the composite-rigid-body algorithm (data.A).
+/// A(q), the joint-space mass matrix, by the composite-rigid-body algorithm (data.A; RBDA 6.2).
 const Eigen::MatrixXd& crba(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q);
 
 /// g(q), the joint torques that balance gravity (data.g).
@@ -21,12 +24,12 @@ const Eigen::VectorXd& generalized_gravity(const Model& model, Data& data,
 /// after forward_kinematics(), for the functions of kinematics.hpp.
 void mass_matrix_and_gravity(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q);
 
-/// b(q, qdot), the Coriolis and centrifugal torques, by recursive Newton-Euler (data.b).
+/// b(q, qdot), the Coriolis and centrifugal torques, by recursive Newton-Euler (data.b; RBDA 5.3).
 const Eigen::VectorXd& coriolis_centrifugal(const Model& model, Data& data,
                                             const Eigen::Ref<const Eigen::VectorXd>& q,
                                             const Eigen::Ref<const Eigen::VectorXd>& qdot);
 
-/// tau = A qdd + b + g, by recursive Newton-Euler (data.tau).
+/// tau = A qdd + b + g, by recursive Newton-Euler (data.tau; RBDA 5.3).
 const Eigen::VectorXd& rnea(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>& q,
                             const Eigen::Ref<const Eigen::VectorXd>& qdot,
                             const Eigen::Ref<const Eigen::VectorXd>& qdd);

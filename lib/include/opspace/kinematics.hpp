@@ -1,6 +1,8 @@
 /// @file kinematics.hpp
 /// Poses, point Jacobians J0 = [Jv; Jw] and Jdot qdot, all expressed in the base frame.
-/// Call forward_kinematics() first: the other functions read data.body_pose.
+/// Call forward_kinematics() first: the other functions read data.body_pose. Source: R.
+/// Featherstone, Rigid Body Dynamics Algorithms, Springer 2008, chapter 4 (joint models and
+/// their motion subspaces S_i); J0 and its blocks are the problem set's.
 #pragma once
 
 #include <Eigen/Core>

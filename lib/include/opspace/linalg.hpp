@@ -7,6 +7,11 @@
 ///   Jbar = A^-1 J^T (J A^-1 J^T)^-1         dynamically consistent inverse (W = A, the mass matrix)
 ///   N    = I - J_inv J                      null-space projector of any right inverse J_inv
 ///
+/// Sources: R. Penrose, "A generalized inverse for matrices", Proc. Cambridge Philosophical
+/// Society 51, 1955 (J+); O. Khatib, IEEE Journal of Robotics and Automation 3(1), 1987, the
+/// operational space formulation (Jbar, the inverse consistent with the dynamics); the problem
+/// set's problem 1a (J#, and the three projectors compared).
+///
 /// Rank deficiency: a singular value sigma_i <= tol * sigma_max counts as zero and is dropped
 /// from the inverse (it is not inverted). The result is then finite: J J_inv becomes the
 /// orthogonal projector onto range(J) instead of I. The functions never return inf or NaN for

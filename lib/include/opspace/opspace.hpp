@@ -7,6 +7,11 @@
 ///   N      = I - Jbar J           null-space projector; N^T acts on torques
 ///   p      = Jbar^T g             gravity seen at the task
 ///
+/// Source: O. Khatib, "A unified approach for motion and force control of robot manipulators:
+/// the operational space formulation", IEEE Journal of Robotics and Automation 3(1), 1987,
+/// where Lambda, Jbar and p are defined and Jbar is shown to be the inverse of J consistent with
+/// the dynamics; the problem set's equations for problems 1b-3 use them as above.
+///
 /// Singularity-robust: Lambda^-1 = J A^-1 J^T is symmetric positive semi-definite, and its
 /// eigenvalues mu_i <= tol * mu_max are dropped from the inverse instead of being inverted.
 /// Near a singularity Lambda therefore stays finite (the task inertia along the singular

@@ -1,6 +1,8 @@
 /// @file singularity.hpp
 /// Singularities of a point's positioning task (problem 4): which directions a point can move
-/// along, which it cannot, and of which type each blocked direction is.
+/// along, which it cannot, and of which type each blocked direction is. Source: the problem
+/// set's problem 4 (singular directions from the SVD of Jv, Type I and Type II by the second-
+/// order motion along each); the SVD is linalg.hpp's.
 ///
 /// Directions. The SVD J = U diag(sigma) V^T of a 3 x n Jacobian (Jv: linear, Jw: angular)
 /// splits R^3 at the tolerance: sigma_i > tol * sigma_max counts as non-zero. The first `rank`

@@ -83,7 +83,7 @@ std::vector<Mistake> mistakes_2() {
       "d. in simulation the arm repeats its motion every period: the null-space self-motion is damped";
   return {
       // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation
-      // (closed forms in tests/graded/trusted/p2.cpp); the arm still moves as it should otherwise.
+      // (closed forms in tests/graded/p2.cpp); the arm still moves as it should otherwise.
       {"no feed-forward acceleration [vdot_d; wdot_d]",
        "the command is -kpx e - kvx (edot) + [vdot_d; wdot_d], with [vdot_d; wdot_d] = E^+ xddot_d from 2(b)",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_feed_forward>; },
