@@ -1,4 +1,5 @@
-// The grader's cache key (grader/trusted/sha256.cpp) against published digests.
+// The grader's cache key (grader/trusted/sha256.cpp: libcrypto's SHA-256 behind our
+// add()/hex()) against published digests.
 #include <doctest/doctest.h>
 
 #include <string>
@@ -23,8 +24,8 @@ TEST_CASE("SHA-256 gives the digests of FIPS 180-2's examples") {
 
 TEST_CASE("SHA-256 pads messages that end on either side of a block's last 8 bytes") {
   // 55 bytes leave room for the 1 bit and the length in one block; 56 to 63 need a second
-  // block; 64 and 120 fill a block exactly. The digests are those of Python's hashlib
-  // (OpenSSL), an independent implementation.
+  // block; 64 and 120 fill a block exactly. The digests are those of GNU coreutils' sha256sum
+  // 9.1 (gnulib's own SHA-256, not OpenSSL's), an independent implementation.
   CHECK_MESSAGE(sha256(std::string(55, 'a')) == "9f4390f8d30c2dd92ec9f095b65e2b9ae9b0a925a5258e241c9f1e910f734318", "55 bytes");
   CHECK_MESSAGE(sha256(std::string(56, 'a')) == "b35439a4ac6f0948b6d6f9e3c6af0f5f590ce20f1bde7090ef7970686ec6738a", "56 bytes");
   CHECK_MESSAGE(sha256(std::string(63, 'a')) == "7d3e74a05d7db15bce4ad9ec0658ea98e3f06eeecf16b4c6fff2da457ddc2f34", "63 bytes");
