@@ -1,15 +1,14 @@
 // The sandbox of sandbox.hpp. Everything the child needs is prepared before clone(), so that
 // between clone() and execve() the child makes only system calls: the grader may be the
 // parent of several sandboxed programs, and the child must not depend on the C library's
-// state (locks, caches) inherited from it.
+// state (locks, caches) inherited from it. The one thing that needs the child's pid, its
+// seccomp filter (sandbox_seccomp.hpp), is built by the parent after clone() and read by the
+// child from a pipe.
 #include "sandbox.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
 #include <grp.h>
-#include <linux/audit.h>
-#include <linux/filter.h>
-#include <linux/seccomp.h>
 #include <poll.h>
 #include <pwd.h>
 #include <sched.h>
@@ -36,6 +35,7 @@
 #include <thread>
 
 #include "interrupt.hpp"
+#include "sandbox_seccomp.hpp"
 
 namespace opspace::grading {
 
@@ -71,10 +71,12 @@ struct ChildPlan {
   gid_t gid = 0;
   Limits limits;
   bool limit_processes = false;
-  std::vector<sock_filter> filter;
-  std::size_t filter_self_pid = 0;  // indices of instructions that compare with the own pid
-  std::size_t filter_self_pid2 = 0;
   bool seccomp = false;
+  // The filter depends on the child's own pid: the parent builds it after clone() and sends it
+  // through this pipe (an instruction count, then the program), into this buffer.
+  int filter_read_fd = -1, filter_write_fd = -1;
+  std::vector<sock_filter> filter;  // BPF_MAXINSNS instructions, allocated before clone()
+  std::size_t filter_size = 0;
 };
 
 // Reports a failed step to the parent and exits; only system calls.
@@ -182,12 +184,36 @@ void child_descriptors(ChildPlan& plan) {
   }
 }
 
+bool read_exact(int fd, void* buffer, std::size_t size) {
+  auto* at = static_cast<char*>(buffer);
+  while (size > 0) {
+    const ssize_t n = read(fd, at, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    at += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// The filter the parent built for this child's pid (attempt()).
+void child_receive_filter(ChildPlan& plan) {
+  close(plan.filter_write_fd);
+  std::uint32_t count = 0;
+  if (!read_exact(plan.filter_read_fd, &count, sizeof count) || count == 0 || count > plan.filter.size() ||
+      !read_exact(plan.filter_read_fd, plan.filter.data(), count * sizeof(sock_filter)))
+    child_fail(plan, "receive the seccomp filter");
+  plan.filter_size = count;
+  close(plan.filter_read_fd);
+}
+
 [[noreturn]] void child_main(ChildPlan& plan) {
   // The grader's threads block SIGINT, SIGTERM and SIGHUP (interrupt.hpp); its programs start
   // with no signal blocked.
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
+  if (plan.seccomp) child_receive_filter(plan);
   if (plan.user_namespace) {
     // Map our own ids into the new user namespace: execve then drops the capabilities this
     // process holds there, since its uid is not 0.
@@ -210,91 +236,10 @@ void child_descriptors(ChildPlan& plan) {
   }
   // Die with the grader (after the user change, which resets this setting).
   prctl(PR_SET_PDEATHSIG, SIGKILL);
-  if (plan.seccomp) {
-    const long self = syscall(SYS_getpid);
-    plan.filter[plan.filter_self_pid].k = static_cast<std::uint32_t>(self);
-    plan.filter[plan.filter_self_pid2].k = static_cast<std::uint32_t>(self);
-    sock_fprog program{static_cast<unsigned short>(plan.filter.size()), plan.filter.data()};
-    if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) child_fail(plan, "set no_new_privs");
-    if (prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &program) != 0) child_fail(plan, "install the seccomp filter");
-  }
+  if (plan.seccomp && !install_seccomp_filter(plan.filter.data(), plan.filter_size))
+    child_fail(plan, "install the seccomp filter");
   execve(plan.argv[0], plan.argv.data(), plan.env.data());
   child_fail(plan, "start the program");
-}
-
-// --- the seccomp filter (x86_64) -------------------------------------------------------------
-
-#if defined(__x86_64__)
-constexpr std::uint32_t kArch = AUDIT_ARCH_X86_64;
-constexpr bool kHaveFilter = true;
-#else
-constexpr std::uint32_t kArch = 0;
-constexpr bool kHaveFilter = false;
-#endif
-
-std::uint32_t arg0() { return static_cast<std::uint32_t>(offsetof(seccomp_data, args)); }
-
-// Denied with EPERM: tracing and reading other processes, kernel interfaces a runner has no
-// use for, and changing the sandbox itself.
-std::vector<long> denied_syscalls() {
-  std::vector<long> out = {SYS_ptrace,       SYS_process_vm_readv, SYS_process_vm_writev, SYS_tkill,
-                           SYS_mount,        SYS_umount2,          SYS_pivot_root,        SYS_chroot,
-                           SYS_unshare,      SYS_setns,            SYS_bpf,               SYS_perf_event_open,
-                           SYS_userfaultfd,  SYS_keyctl,           SYS_add_key,           SYS_request_key,
-                           SYS_kexec_load,   SYS_init_module,      SYS_finit_module,      SYS_delete_module};
-#ifdef SYS_io_uring_setup
-  out.insert(out.end(), {SYS_io_uring_setup, SYS_io_uring_enter, SYS_io_uring_register});
-#endif
-#ifdef SYS_pidfd_send_signal
-  out.push_back(SYS_pidfd_send_signal);
-#endif
-#ifdef SYS_pidfd_getfd
-  out.push_back(SYS_pidfd_getfd);
-#endif
-  return out;
-}
-
-void build_filter(ChildPlan& plan) {
-  std::vector<sock_filter>& f = plan.filter;
-  auto stmt = [&f](std::uint16_t code, std::uint32_t k) { f.push_back(BPF_STMT(code, k)); };
-  auto jump = [&f](std::uint16_t code, std::uint32_t k, std::uint8_t jt, std::uint8_t jf) {
-    f.push_back(BPF_JUMP(code, k, jt, jf));
-  };
-  const std::uint32_t allow = SECCOMP_RET_ALLOW;
-  const std::uint32_t kill = SECCOMP_RET_KILL_PROCESS;
-  const std::uint32_t eperm = SECCOMP_RET_ERRNO | EPERM;
-  stmt(BPF_LD | BPF_W | BPF_ABS, static_cast<std::uint32_t>(offsetof(seccomp_data, arch)));
-  jump(BPF_JMP | BPF_JEQ | BPF_K, kArch, 1, 0);
-  stmt(BPF_RET | BPF_K, kill);
-  stmt(BPF_LD | BPF_W | BPF_ABS, static_cast<std::uint32_t>(offsetof(seccomp_data, nr)));
-  jump(BPF_JMP | BPF_JGE | BPF_K, 0x40000000u, 0, 1);  // the x32 ABI
-  stmt(BPF_RET | BPF_K, kill);
-  for (long nr : denied_syscalls()) {
-    jump(BPF_JMP | BPF_JEQ | BPF_K, static_cast<std::uint32_t>(nr), 0, 1);
-    stmt(BPF_RET | BPF_K, eperm);
-  }
-  // socket(domain, ...): AF_UNIX only (no network, whatever the namespaces).
-  jump(BPF_JMP | BPF_JEQ | BPF_K, SYS_socket, 0, 4);
-  stmt(BPF_LD | BPF_W | BPF_ABS, arg0());
-  jump(BPF_JMP | BPF_JEQ | BPF_K, AF_UNIX, 0, 1);
-  stmt(BPF_RET | BPF_K, allow);
-  stmt(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | EACCES);
-  // kill(pid, sig): only its own process group (0) or itself.
-  jump(BPF_JMP | BPF_JEQ | BPF_K, SYS_kill, 0, 5);
-  stmt(BPF_LD | BPF_W | BPF_ABS, arg0());
-  jump(BPF_JMP | BPF_JEQ | BPF_K, 0, 2, 0);
-  plan.filter_self_pid = f.size();
-  jump(BPF_JMP | BPF_JEQ | BPF_K, 0, 1, 0);  // k = its pid, set in the child
-  stmt(BPF_RET | BPF_K, eperm);
-  stmt(BPF_RET | BPF_K, allow);
-  // tgkill(tgid, tid, sig): only itself (abort() and raise() use it).
-  jump(BPF_JMP | BPF_JEQ | BPF_K, SYS_tgkill, 0, 4);
-  stmt(BPF_LD | BPF_W | BPF_ABS, arg0());
-  plan.filter_self_pid2 = f.size();
-  jump(BPF_JMP | BPF_JEQ | BPF_K, 0, 0, 1);  // k = its pid, set in the child
-  stmt(BPF_RET | BPF_K, allow);
-  stmt(BPF_RET | BPF_K, eperm);
-  stmt(BPF_RET | BPF_K, allow);
 }
 
 // --- the new root ----------------------------------------------------------------------------
@@ -446,6 +391,15 @@ pid_t attempt(ChildPlan& plan, const SandboxSpec& spec, unsigned long flags, std
     return -1;
   }
   plan.error_fd = error_pipe[1];
+  int filter_pipe[2] = {-1, -1};
+  if (plan.seccomp && pipe2(filter_pipe, O_CLOEXEC) != 0) {
+    close(error_pipe[0]);
+    close(error_pipe[1]);
+    why = "create a pipe";
+    return -1;
+  }
+  plan.filter_read_fd = filter_pipe[0];
+  plan.filter_write_fd = filter_pipe[1];
   plan.user_namespace = (flags & CLONE_NEWUSER) != 0;
   plan.mount_namespace = plan.pid_namespace = (flags & CLONE_NEWNS) != 0;
   plan.mounts.clear();
@@ -458,10 +412,40 @@ pid_t attempt(ChildPlan& plan, const SandboxSpec& spec, unsigned long flags, std
   if (pid > 0) live_programs().insert(static_cast<pid_t>(pid));
   hold.unlock();
   close(error_pipe[1]);
+  if (plan.seccomp) close(filter_pipe[0]);
   if (pid < 0) {
     close(error_pipe[0]);
+    if (plan.seccomp) close(filter_pipe[1]);
     why = std::string("start a process: ") + std::strerror(clone_error);
     return -1;
+  }
+  if (plan.seccomp) {
+    // The child's pid as it sees it: 1, the init of its new PID namespace, or the one clone gave.
+    std::string failed;
+    try {
+      const std::vector<sock_filter> filter =
+          seccomp_filter((flags & CLONE_NEWPID) ? 1 : static_cast<pid_t>(pid));
+      const auto count = static_cast<std::uint32_t>(filter.size());
+      std::string message(reinterpret_cast<const char*>(&count), sizeof count);
+      message.append(reinterpret_cast<const char*>(filter.data()), filter.size() * sizeof(sock_filter));
+      for (std::size_t sent = 0; sent < message.size() && failed.empty();) {
+        const ssize_t n = write(filter_pipe[1], message.data() + sent, message.size() - sent);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) failed = std::string("send the seccomp filter: ") + std::strerror(errno);
+        else sent += static_cast<std::size_t>(n);
+      }
+    } catch (const std::exception& e) {
+      failed = e.what();
+    }
+    close(filter_pipe[1]);
+    if (!failed.empty()) {
+      kill(static_cast<pid_t>(pid), SIGKILL);
+      waitpid(static_cast<pid_t>(pid), nullptr, 0);
+      forget(static_cast<pid_t>(pid));
+      close(error_pipe[0]);
+      why = failed;
+      return -1;
+    }
   }
   // The child reports a failed step, or closes the pipe by starting the program. It makes only
   // system calls until then, so 30 s means it is stuck: it is killed and reported.
@@ -566,10 +550,8 @@ Sandboxed spawn(const SandboxSpec& spec) {
   }
   if (spec.isolate) {
     on.limits = true;
-    if (kHaveFilter) {
-      build_filter(plan);
-      plan.seccomp = on.seccomp = true;
-    }
+    plan.seccomp = on.seccomp = true;
+    plan.filter.resize(BPF_MAXINSNS);
   }
 
   // Namespaces, from the most to the least: as root directly, else through a user namespace,

@@ -11,7 +11,8 @@
 ///   is init: when it ends the kernel kills the rest), no network (a new network namespace),
 ///   and a private filesystem view that shows only /usr, /etc, the paths it is given and a
 ///   work folder;
-/// - a seccomp filter: no socket but AF_UNIX, no ptrace, no signals but to itself;
+/// - a seccomp filter (sandbox_seccomp.hpp, by libseccomp): no socket but AF_UNIX, no ptrace,
+///   no signals but to itself or its group;
 /// - the grader is a child subreaper, so that whatever it started and detached (setsid,
 ///   double fork) is re-parented to the grader and killed by kill_all().
 #pragma once
