@@ -1,5 +1,10 @@
-// Machine-readable grades: Gradescope's results.json and JUnit XML.
+// Machine-readable grades: Gradescope's results.json (written by nlohmann-json) and JUnit XML.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 #include <sstream>
 
@@ -10,25 +15,18 @@ namespace opspace::grading {
 
 namespace {
 
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buffer[8];
-          std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-          out += buffer;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+/// A score or a time as before nlohmann-json: 10 significant digits, and an integer without a
+/// fraction (deploy/scores.cmake and tests/tamper/run_case.cmake add scores with CMake's integer
+/// math). NaN and infinities, which JSON cannot write, become null.
+Json number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", v);
+  const double rounded = std::strtod(text, nullptr);
+  if (std::isfinite(rounded) && rounded == std::floor(rounded) && std::abs(rounded) < 1e15)
+    return static_cast<std::int64_t>(rounded);
+  return rounded;
 }
 
 std::string xml_text(const std::string& text) {
@@ -77,22 +75,24 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
     }
     if (!p.warnings.empty()) summary << "  compiler warnings:\n" << quote_block(p.warnings, "    ");
   }
-  out.precision(10);
-  out << "{\n  \"score\": " << score << ",\n  \"max_score\": " << max_score
-      << ",\n  \"execution_time\": " << seconds << ",\n  \"output\": " << json_string(summary.str())
-      << ",\n  \"visibility\": \"visible\",\n  \"tests\": [";
-  bool first = true;
+  Json tests = Json::array();
   for (const ProblemResult& p : problems) {
     for (const TestResult& r : p.results) {
       const std::string name = p.problem->key + " " + r.test->name;
-      out << (first ? "\n" : ",\n") << "    {\"name\": " << json_string(name) << ", \"score\": " << r.score
-          << ", \"max_score\": " << r.test->points << ", \"status\": \""
-          << (r.score >= r.test->points ? "passed" : "failed") << "\", \"output\": " << json_string(feedback(r))
-          << ", \"visibility\": \"" << (hidden_test(name, hidden) ? "hidden" : "visible") << "\"}";
-      first = false;
+      tests.push_back(Json{{"name", name},
+                           {"score", number(r.score)},
+                           {"max_score", number(r.test->points)},
+                           {"status", r.score >= r.test->points ? "passed" : "failed"},
+                           {"output", feedback(r)},
+                           {"visibility", hidden_test(name, hidden) ? "hidden" : "visible"}});
     }
   }
-  out << "\n  ]\n}\n";
+  const Json results{{"score", number(score)},          {"max_score", number(max_score)},
+                     {"execution_time", number(seconds)}, {"output", summary.str()},
+                     {"visibility", "visible"},           {"tests", std::move(tests)}};
+  // The texts are the student's, already escaped (student_text.hpp): replace, never throw on,
+  // bytes that are not UTF-8, so that no text can stop the file from being written.
+  out << results.dump(2, ' ', false, Json::error_handler_t::replace) << "\n";
 }
 
 void write_junit(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds) {

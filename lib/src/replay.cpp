@@ -1,6 +1,10 @@
 #include "opspace/replay.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -64,67 +68,41 @@ namespace {
 /// Link colours by body index (the fixed base is grey).
 const char* const kBodyColors[] = {"#e67e22", "#d5d8dc", "#2e86c1", "#d5d8dc", "#e67e22", "#27ae60"};
 
-/// A JSON writer for numbers and plain strings, just what the page needs.
-class Json {
- public:
-  Json() { out_.precision(6); }
-  Json& raw(const char* s) {
-    out_ << s;
-    return *this;
-  }
-  Json& num(double v) {
-    out_ << (std::isfinite(v) ? v : 0.0);  // JSON has no NaN; the page would not draw one anyway
-    return *this;
-  }
-  Json& str(const std::string& s) {
-    out_ << '"';
-    for (char c : s) {
-      switch (c) {
-        case '"': out_ << "\\\""; break;
-        case '\\': out_ << "\\\\"; break;
-        case '\n': out_ << "\\n"; break;
-        case '<': out_ << "\\u003c"; break;  // no "</script>" can close the data block early
-        default:
-          if (static_cast<unsigned char>(c) < 0x20) {
-            out_ << ' ';
-          } else {
-            out_ << c;
-          }
-      }
-    }
-    out_ << '"';
-    return *this;
-  }
-  Json& vec(const Eigen::Vector3d& v) {
-    raw("[").num(v.x()).raw(",").num(v.y()).raw(",").num(v.z()).raw("]");
-    return *this;
-  }
-  Json& pose(const Eigen::Isometry3d& X) {
-    const Eigen::Quaterniond r(X.rotation());
-    const Eigen::Vector3d p = X.translation();
-    raw("[").num(p.x()).raw(",").num(p.y()).raw(",").num(p.z()).raw(",").num(r.x()).raw(",").num(r.y());
-    raw(",").num(r.z()).raw(",").num(r.w()).raw("]");
-    return *this;
-  }
-  std::string text() const { return out_.str(); }
+using Json = nlohmann::ordered_json;  // keys in the order written
 
- private:
-  std::ostringstream out_;
-};
+/// A number for the page: 6 significant digits (what the viewer draws needs no more, and the page
+/// stays small), an integer without a fraction; JSON has no NaN, and the page would not draw one
+/// anyway: 0.
+Json num(double v) {
+  if (!std::isfinite(v)) return 0;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  const double rounded = std::strtod(text, nullptr);
+  if (rounded == std::floor(rounded) && std::abs(rounded) < 1e15) return static_cast<std::int64_t>(rounded);
+  return rounded;
+}
 
-void track(Json& j, const Track& values, const std::vector<std::size_t>& frames, std::size_t samples,
-           const std::string& what) {
+Json vec(const Eigen::Vector3d& v) { return Json::array({num(v.x()), num(v.y()), num(v.z())}); }
+
+/// [px, py, pz, qx, qy, qz, qw], appended to `out`.
+void pose(Json& out, const Eigen::Isometry3d& X) {
+  const Eigen::Quaterniond r(X.rotation());
+  const Eigen::Vector3d p = X.translation();
+  for (const double v : {p.x(), p.y(), p.z(), r.x(), r.y(), r.z(), r.w()}) out.push_back(num(v));
+}
+
+Json track(const Track& values, const std::vector<std::size_t>& frames, std::size_t samples, const std::string& what) {
   if (values.size() != 1 && values.size() != samples) {
     throw std::invalid_argument("replay marker '" + what + "': " + std::to_string(values.size()) +
                                 " positions for " + std::to_string(samples) + " samples (give one or one per sample)");
   }
-  j.raw("[");
+  Json out = Json::array();
   if (values.size() == 1) {
-    j.vec(values[0]);
+    out.push_back(vec(values[0]));
   } else {
-    for (std::size_t k = 0; k < frames.size(); ++k) j.raw(k ? "," : "").vec(values[frames[k]]);
+    for (const std::size_t k : frames) out.push_back(vec(values[k]));
   }
-  j.raw("]");
+  return out;
 }
 
 const char* kind_name(Shape::Kind kind) {
@@ -177,65 +155,70 @@ std::string scene_json(const Scene& scene) {
   const Model& model = scene.model;
   const std::vector<std::size_t> frames = frame_indices(scene.t, scene.fps);
 
-  Json j;
-  j.raw("{\"title\":").str(scene.title).raw(",\"subtitle\":").str(scene.subtitle);
-  j.raw(",\"robot\":").str(model.name).raw(",\"bodies\":").num(model.dof());
-  j.raw(",\"view\":").vec(scene.view);
-  j.raw(",\"shapes\":[");
-  for (std::size_t s = 0; s < model.visuals.size(); ++s) {
-    const Shape& shape = model.visuals[s];
-    const char* color = shape.body < 0 ? "#7f8c8d" : kBodyColors[shape.body % 6];
-    j.raw(s ? "," : "").raw("{\"kind\":\"").raw(kind_name(shape.kind)).raw("\",\"body\":").num(shape.body);
-    j.raw(",\"size\":").vec(shape.box_size).raw(",\"radius\":").num(shape.radius);
-    j.raw(",\"length\":").num(shape.length).raw(",\"color\":").str(color);
-    j.raw(",\"placement\":").pose(shape.placement).raw("}");
+  Json shapes = Json::array();
+  for (const Shape& shape : model.visuals) {
+    Json placement = Json::array();
+    pose(placement, shape.placement);
+    shapes.push_back(Json{{"kind", kind_name(shape.kind)},
+                          {"body", shape.body},
+                          {"size", vec(shape.box_size)},
+                          {"radius", num(shape.radius)},
+                          {"length", num(shape.length)},
+                          {"color", shape.body < 0 ? "#7f8c8d" : kBodyColors[shape.body % 6]},
+                          {"placement", std::move(placement)}});
   }
-  j.raw("],\"t\":[");
-  for (std::size_t k = 0; k < frames.size(); ++k) j.raw(k ? "," : "").num(scene.t[frames[k]]);
-  j.raw("],\"poses\":[");
+  Json times = Json::array();
+  for (const std::size_t k : frames) times.push_back(num(scene.t[k]));
+  Json poses = Json::array();  // per frame: 7 numbers per body, flat
   Data data(model);
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    forward_kinematics(model, data, scene.q[frames[k]]);
-    j.raw(k ? ",[" : "[");
-    for (int b = 0; b < model.dof(); ++b) {
-      std::string pose = Json().pose(data.body_pose[b]).text();
-      pose = pose.substr(1, pose.size() - 2);  // flat: 7 numbers per body
-      j.raw(b ? "," : "").raw(pose.c_str());
-    }
-    j.raw("]");
+  for (const std::size_t k : frames) {
+    forward_kinematics(model, data, scene.q[k]);
+    Json frame = Json::array();
+    for (int b = 0; b < model.dof(); ++b) pose(frame, data.body_pose[b]);
+    poses.push_back(std::move(frame));
   }
-  j.raw("],\"markers\":[");
-  for (std::size_t m = 0; m < scene.markers.size(); ++m) {
-    const Marker& mk = scene.markers[m];
-    j.raw(m ? "," : "").raw("{\"kind\":\"").raw(kind_name(mk.kind)).raw("\",\"label\":").str(mk.label);
-    j.raw(",\"color\":").str(mk.color).raw(",\"radius\":").num(mk.radius).raw(",\"scale\":").num(mk.scale);
+  Json markers = Json::array();
+  for (const Marker& mk : scene.markers) {
+    Json m{{"kind", kind_name(mk.kind)}, {"label", mk.label}, {"color", mk.color},
+           {"radius", num(mk.radius)}, {"scale", num(mk.scale)}};
     if (mk.kind == Marker::Kind::kPlane) {
-      j.raw(",\"point\":").vec(mk.point).raw(",\"normal\":").vec(mk.normal).raw(",\"size\":").num(mk.size);
+      m["point"] = vec(mk.point);
+      m["normal"] = vec(mk.normal);
+      m["size"] = num(mk.size);
     } else {
-      j.raw(",\"positions\":");
-      track(j, mk.positions, frames, samples, mk.label);
+      m["positions"] = track(mk.positions, frames, samples, mk.label);
     }
     if (mk.kind == Marker::Kind::kArrow) {
-      j.raw(",\"origins\":");
-      track(j, mk.positions, frames, samples, mk.label);
-      j.raw(",\"vectors\":");
-      track(j, mk.vectors, frames, samples, mk.label);
+      m["origins"] = track(mk.positions, frames, samples, mk.label);
+      m["vectors"] = track(mk.vectors, frames, samples, mk.label);
     }
-    j.raw("}");
+    markers.push_back(std::move(m));
   }
-  j.raw("],\"hud\":[");
-  for (std::size_t r = 0; r < scene.readouts.size(); ++r) {
-    const Readout& ro = scene.readouts[r];
+  Json hud = Json::array();
+  for (const Readout& ro : scene.readouts) {
     if (ro.values.size() != samples) {
       throw std::invalid_argument("replay readout '" + ro.label + "': " + std::to_string(ro.values.size()) +
                                   " values for " + std::to_string(samples) + " samples");
     }
-    j.raw(r ? "," : "").raw("{\"label\":").str(ro.label).raw(",\"values\":[");
-    for (std::size_t k = 0; k < frames.size(); ++k) j.raw(k ? "," : "").num(ro.values[frames[k]]);
-    j.raw("]}");
+    Json values = Json::array();
+    for (const std::size_t k : frames) values.push_back(num(ro.values[k]));
+    hud.push_back(Json{{"label", ro.label}, {"values", std::move(values)}});
   }
-  j.raw("]}");
-  return j.text();
+  const Json scene_data{{"title", scene.title},   {"subtitle", scene.subtitle}, {"robot", model.name},
+                        {"bodies", model.dof()},  {"view", vec(scene.view)},    {"shapes", std::move(shapes)},
+                        {"t", std::move(times)},  {"poses", std::move(poses)},  {"markers", std::move(markers)},
+                        {"hud", std::move(hud)}};
+  // '<' written \u003c: no "</script>" can close the data block early (JSON has '<' only inside
+  // strings). Bytes that are not UTF-8 are replaced (U+FFFD), never thrown on.
+  std::string out;
+  for (const char c : scene_data.dump(-1, ' ', false, Json::error_handler_t::replace)) {
+    if (c == '<') {
+      out += "\\u003c";
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 Output write(const Scene& scene, const std::string& html_path) {

@@ -3,7 +3,6 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -11,6 +10,7 @@
 #include "opspace/dynamics.hpp"
 #include "opspace/kinematics.hpp"
 #include "opspace/linalg.hpp"
+#include "page_json.hpp"
 
 namespace opspace::explore {
 
@@ -107,90 +107,42 @@ Eigen::VectorXd self_motion(const Model& model, Data& data, const Tip& tip,
 
 // ---- JSON for the page ----
 
-std::string json_number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
+Json json_number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 namespace {
 
-class Json {
- public:
-  Json& raw(const char* s) {
-    out_ += s;
-    return *this;
-  }
-  Json& key(const char* k) {
-    comma();
-    out_ += '"';
-    out_ += k;
-    out_ += "\":";
-    fresh_ = true;
-    return *this;
-  }
-  Json& num(double v) {
-    comma();
-    out_ += json_number(v);  // null for an unbounded radius
-    return *this;
-  }
-  Json& open(char c) {
-    comma();
-    out_ += c;
-    fresh_ = true;
-    return *this;
-  }
-  Json& close(char c) {
-    out_ += c;
-    fresh_ = false;
-    return *this;
-  }
-  /// A matrix as an array of its columns (the page reads directions as columns).
-  Json& columns(const Eigen::Ref<const Eigen::MatrixXd>& M) {
-    open('[');
-    for (Eigen::Index c = 0; c < M.cols(); ++c) {
-      open('[');
-      for (Eigen::Index r = 0; r < M.rows(); ++r) num(M(r, c));
-      close(']');
-    }
-    return close(']');
-  }
-  Json& vector(const Eigen::Ref<const Eigen::VectorXd>& v) {
-    open('[');
-    for (Eigen::Index i = 0; i < v.size(); ++i) num(v(i));
-    return close(']');
-  }
-  std::string text() const { return out_; }
-
- private:
-  void comma() {
-    if (!fresh_) out_ += ',';
-    fresh_ = false;
-  }
-  std::string out_;
-  bool fresh_ = true;
-};
-
-/// Body poses [px, py, pz, qx, qy, qz, qw], one array per body, at the last forward kinematics.
-void poses(Json& j, const Data& data) {
-  j.open('[');
-  for (const Eigen::Isometry3d& X : data.body_pose) {
-    const Eigen::Quaterniond r(X.rotation());
-    j.open('[').num(X.translation().x()).num(X.translation().y()).num(X.translation().z());
-    j.num(r.x()).num(r.y()).num(r.z()).num(r.w()).close(']');
-  }
-  j.close(']');
+Json vector_json(const Eigen::Ref<const Eigen::VectorXd>& v) {
+  Json out = Json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(json_number(v(i)));
+  return out;
 }
 
-void moved(Json& j, const Model& model, Data& data, const Tip& tip, const Request& r, Inverse inverse) {
+/// A matrix as an array of its columns (the page reads directions as columns).
+Json columns_json(const Eigen::Ref<const Eigen::MatrixXd>& M) {
+  Json out = Json::array();
+  for (Eigen::Index c = 0; c < M.cols(); ++c) out.push_back(vector_json(M.col(c)));
+  return out;
+}
+
+/// Body poses [px, py, pz, qx, qy, qz, qw], one array per body, at the last forward kinematics.
+Json poses(const Data& data) {
+  Json out = Json::array();
+  for (const Eigen::Isometry3d& X : data.body_pose) {
+    const Eigen::Quaterniond r(X.rotation());
+    const Eigen::Vector3d p = X.translation();
+    out.push_back(Json::array({json_number(p.x()), json_number(p.y()), json_number(p.z()), json_number(r.x()),
+                               json_number(r.y()), json_number(r.z()), json_number(r.w())}));
+  }
+  return out;
+}
+
+Json moved(const Model& model, Data& data, const Tip& tip, const Request& r, Inverse inverse) {
   Eigen::VectorXd q = self_motion(model, data, tip, r.q, r.self_joint, r.self_s, inverse);
   q = tip_motion(model, data, tip, q, r.u, r.tip_s, inverse);
   forward_kinematics(model, data, q);
-  j.open('{').key("q").vector(q).key("tip").vector(point_position(model, data, tip.frame, tip.point));
-  j.key("poses");
-  poses(j, data);
-  j.close('}');
+  Json out{{"q", vector_json(q)}, {"tip", vector_json(point_position(model, data, tip.frame, tip.point))}};
+  out["poses"] = poses(data);
+  return out;
 }
 
 }  // namespace
@@ -205,28 +157,24 @@ std::string view_json(const Model& model, Data& data, const Tip& tip, const Requ
   Request r = request;
   r.u.normalize();
   const TipView v = view(model, data, tip, r.q);
-  Json j;
-  j.open('{').key("x").vector(v.x).key("Jv").columns(v.Jv);
-  j.key("velocity").open('{').key("axes").columns(v.velocity_axes).key("radii").vector(v.velocity_radii).close('}');
-  j.key("mass").open('{').key("axes").columns(v.mass_axes).key("radii").vector(v.mass_radii).close('}');
   const SingularityAnalysis& s = v.singularities;
-  j.key("rank").num(s.linear.rank).key("type_one").num(s.type_one);
-  j.key("singular").open('[');
+  Json singular = Json::array();
   for (int i = 0; i < 3 - s.linear.rank; ++i) {
-    j.open('{').key("u").vector(s.linear.singular().col(i));
-    j.key("type").num(static_cast<int>(s.type(i))).close('}');
+    singular.push_back(Json{{"u", vector_json(s.linear.singular().col(i))}, {"type", static_cast<int>(s.type(i))}});
   }
-  j.close(']');
-  j.key("angular_sigma").vector(s.angular.sigma);
+  Json j{{"x", vector_json(v.x)},
+         {"Jv", columns_json(v.Jv)},
+         {"velocity", {{"axes", columns_json(v.velocity_axes)}, {"radii", vector_json(v.velocity_radii)}}},
+         {"mass", {{"axes", columns_json(v.mass_axes)}, {"radii", vector_json(v.mass_radii)}}},  // null: unbounded
+         {"rank", s.linear.rank},
+         {"type_one", s.type_one},
+         {"singular", std::move(singular)},
+         {"angular_sigma", vector_json(s.angular.sigma)}};
   forward_kinematics(model, data, r.q);
-  j.key("poses");
-  poses(j, data);
-  j.key("pseudo_inverse");
-  moved(j, model, data, tip, r, Inverse::kPseudoInverse);
-  j.key("dynamically_consistent");
-  moved(j, model, data, tip, r, Inverse::kDynamicallyConsistent);
-  j.close('}');
-  return j.text();
+  j["poses"] = poses(data);
+  j["pseudo_inverse"] = moved(model, data, tip, r, Inverse::kPseudoInverse);
+  j["dynamically_consistent"] = moved(model, data, tip, r, Inverse::kDynamicallyConsistent);
+  return j.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 }  // namespace opspace::explore

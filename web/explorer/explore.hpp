@@ -72,13 +72,10 @@ struct Request {
   double self_s = 0.0;                         ///< self-motion (rad or m)
 };
 
-/// Everything the page draws for `request`, as JSON with 17 significant digits (exact
-/// doubles): the view, each body's pose, and for J+ and Jbar the moved configuration, its body
-/// poses and its tip. Throws std::invalid_argument for a wrong-sized or non-finite request.
+/// Everything the page draws for `request`, as JSON (page_json.hpp: exact doubles, null for an
+/// unbounded mass radius): the view, each body's pose, and for J+ and Jbar the moved
+/// configuration, its body poses and its tip. Throws std::invalid_argument for a wrong-sized or
+/// non-finite request.
 std::string view_json(const Model& model, Data& data, const Tip& tip, const Request& request);
-
-/// A number as JSON: 17 significant digits, or null for an infinity or a NaN, which JSON cannot
-/// write (the page reads null as unbounded).
-std::string json_number(double v);
 
 }  // namespace opspace::explore

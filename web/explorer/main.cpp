@@ -41,9 +41,7 @@ std::string inline_script(std::string script) {
 }
 
 int write_page(const std::string& out_path, const std::string& core, const std::string& viewer) {
-  std::string robots = "[";
-  for (const ex::Robot& r : ex::course_robots()) robots += (robots.size() > 1 ? "," : "") + ex::robot_json(r);
-  robots += "]";
+  const std::string data = ex::page_data_json(ex::course_robots());
   std::ofstream out(out_path);
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
@@ -51,7 +49,7 @@ int write_page(const std::string& out_path, const std::string& core, const std::
       << "<!-- Written by opspace-explorer (web/explorer/main.cpp). The numbers come from the library's C++ "
          "compiled to WebAssembly (web/explorer/wasm_api.cpp); viewer: web/src/explorer.js with three.js (MIT). -->\n"
       << "</head>\n<body>\n"
-      << "<script id=\"opspace-explorer-data\" type=\"application/json\">{\"robots\":" << robots << "}</script>\n"
+      << "<script id=\"opspace-explorer-data\" type=\"application/json\">" << data << "</script>\n"
       << "<script>" << inline_script(read_file(core)) << "</script>\n"
       << "<script>" << inline_script(read_file(viewer)) << "</script>\n</body>\n</html>\n";
   out.close();

@@ -1,52 +1,66 @@
-// The explorer page's data block (page_data.hpp).
+// The explorer page's data block (page_data.hpp), written with nlohmann-json (page_json.hpp).
 #include "page_data.hpp"
 
 #include "explore.hpp"
 #include "opspace/model_text.hpp"
 #include "opspace/replay.hpp"
+#include "page_json.hpp"
 
 namespace opspace::explore {
 
 namespace {
 
-/// A JSON string; '<' escaped so that no "</script>" ends the data block early.
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '<': out += "\\u003c"; break;
-      default: out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
+/// The text of `json` for an HTML data block: '<' written \u003c, so that no "</script>" ends
+/// the block early (JSON has '<' only inside strings), and bytes that are not UTF-8 replaced
+/// (U+FFFD) instead of thrown on.
+std::string script_text(const Json& json) {
+  std::string out;
+  for (const char c : json.dump(-1, ' ', false, Json::error_handler_t::replace)) {
+    if (c == '<') {
+      out += "\\u003c";
+    } else {
+      out += c;
     }
   }
-  return out + "\"";
+  return out;
 }
 
-}  // namespace
-
-std::string robot_json(const Robot& r) {
+Json robot_data(const Robot& r) {
   replay::Scene scene;
   scene.title = r.title;
   scene.model = r.model;
   scene.t = {0.0};
   scene.q = {r.q0};
-  std::string joints = "[";
+  Json joints = Json::array();
   for (const Body& b : r.model.bodies) {
-    joints += (joints.size() > 1 ? "," : "") + std::string("{\"name\":") + quoted(b.joint_name) +
-              ",\"prismatic\":" + (b.type == JointType::kPrismatic ? "true" : "false") +
-              ",\"lower\":" + json_number(b.lower) + ",\"upper\":" + json_number(b.upper) + "}";
+    joints.push_back(Json{{"name", b.joint_name},
+                          {"prismatic", b.type == JointType::kPrismatic},
+                          {"lower", json_number(b.lower)},
+                          {"upper", json_number(b.upper)}});
   }
-  joints += "]";
-  std::string q0 = "[";
-  for (Eigen::Index i = 0; i < r.q0.size(); ++i) q0 += (i ? "," : "") + json_number(r.q0(i));
-  q0 += "]";
-  return "{\"key\":" + quoted(r.key) + ",\"title\":" + quoted(r.title) + ",\"caption\":" + quoted(r.caption) +
-         ",\"model\":" + quoted(write_model_text(r.model)) + ",\"tip_link\":" + quoted(r.tip_link) +
-         ",\"tip_point\":[" + json_number(r.tip.point.x()) + "," + json_number(r.tip.point.y()) + "," +
-         json_number(r.tip.point.z()) + "],\"joints\":" + joints + ",\"q0\":" + q0 +
-         ",\"self_joint\":" + std::to_string(r.self_joint) + ",\"scene\":" + replay::scene_json(scene) + "}";
+  Json q0 = Json::array();
+  for (Eigen::Index i = 0; i < r.q0.size(); ++i) q0.push_back(json_number(r.q0(i)));
+  return Json{{"key", r.key},
+              {"title", r.title},
+              {"caption", r.caption},
+              {"model", write_model_text(r.model)},
+              {"tip_link", r.tip_link},
+              {"tip_point", {json_number(r.tip.point.x()), json_number(r.tip.point.y()), json_number(r.tip.point.z())}},
+              {"joints", std::move(joints)},
+              {"q0", std::move(q0)},
+              {"self_joint", r.self_joint},
+              // The replay's own JSON text (lib/src/replay.cpp), read back as JSON.
+              {"scene", Json::parse(replay::scene_json(scene))}};
+}
+
+}  // namespace
+
+std::string robot_json(const Robot& robot) { return script_text(robot_data(robot)); }
+
+std::string page_data_json(const std::vector<Robot>& robots) {
+  Json list = Json::array();
+  for (const Robot& r : robots) list.push_back(robot_data(r));
+  return script_text(Json{{"robots", std::move(list)}});
 }
 
 }  // namespace opspace::explore

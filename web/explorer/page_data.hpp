@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "robots.hpp"
 
@@ -13,5 +14,8 @@ namespace opspace::explore {
 /// joint, or no <limit>) is written as null: JSON has no infinity (web/src/explorer.js then
 /// gives the slider one turn, or one metre, on that side of q0).
 std::string robot_json(const Robot& robot);
+
+/// The page's whole data block, {"robots": [one entry per robot]}.
+std::string page_data_json(const std::vector<Robot>& robots);
 
 }  // namespace opspace::explore
