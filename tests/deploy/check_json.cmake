@@ -2,8 +2,11 @@ cmake_minimum_required(VERSION 3.22)
 # Checks a results.json written by run_autograder or scripts/regrade:
 # - it parses, with a numeric score and a tests[] array (empty only if EMPTY is set);
 # - each problem in FULL earned all its points, each in ZERO none (tests are named "<key> ...");
-# - "output" matches every regular expression in OUTPUT (a list).
-#   cmake -DJSON=file [-DFULL="1a;1b"] [-DZERO="2"] [-DOUTPUT="regex;regex"] [-DEMPTY=ON] -P check_json.cmake
+# - "output" matches every regular expression in OUTPUT (a list);
+# - the tests whose name matches HIDDEN (a regular expression; one at least) are hidden, the
+#   others visible.
+#   cmake -DJSON=file [-DFULL="1a;1b"] [-DZERO="2"] [-DOUTPUT="regex;regex"] [-DHIDDEN=regex] [-DEMPTY=ON]
+#         -P check_json.cmake
 if(NOT EXISTS "${JSON}")
   message(FATAL_ERROR "${JSON} was not written")
 endif()
@@ -25,10 +28,22 @@ foreach(pattern IN LISTS OUTPUT)
     message(FATAL_ERROR "${JSON}: the output does not say '${pattern}':\n${output}")
   endif()
 endforeach()
+set(hidden_count 0)
 if(count GREATER 0)
   math(EXPR last "${count} - 1")
   foreach(i RANGE ${last})
     string(JSON name GET "${json}" tests ${i} name)
+    if(DEFINED HIDDEN)
+      string(JSON visibility GET "${json}" tests ${i} visibility)
+      set(expected visible)
+      if(name MATCHES "${HIDDEN}")
+        set(expected hidden)
+        math(EXPR hidden_count "${hidden_count} + 1")
+      endif()
+      if(NOT visibility STREQUAL expected)
+        message(FATAL_ERROR "${JSON}: '${name}' is ${visibility}, should be ${expected} (HIDDEN '${HIDDEN}')")
+      endif()
+    endif()
     string(JSON s GET "${json}" tests ${i} score)
     string(JSON max GET "${json}" tests ${i} max_score)
     string(REGEX MATCH "^[^ ]+" problem "${name}")
@@ -39,5 +54,8 @@ if(count GREATER 0)
       message(FATAL_ERROR "${JSON}: '${name}' earned ${s}; problem ${problem} should earn 0")
     endif()
   endforeach()
+endif()
+if(DEFINED HIDDEN AND hidden_count EQUAL 0)
+  message(FATAL_ERROR "${JSON}: no test's name matches '${HIDDEN}'")
 endif()
 message("${JSON}: score ${score}, ${count} tests, as expected")
