@@ -61,7 +61,7 @@ void forget_folder(const std::string& path) {
 }
 
 TemporaryFolder::TemporaryFolder(const std::string& prefix) {
-  std::string pattern = prefix + "XXXXXX";
+  std::string pattern = prefix + std::to_string(getpid()) + "-XXXXXX";
   if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a folder " + pattern + ": " + std::strerror(errno));
   path_ = pattern;
   track_folder(path_);

@@ -13,8 +13,9 @@ void track_folder(const std::string& path);
 /// Forgets it (it was removed, or is no longer temporary).
 void forget_folder(const std::string& path);
 
-/// A temporary folder made by mkdtemp() from `prefix` ("/tmp/opspace-build-"), tracked while it
-/// lives, removed with its contents when it goes out of scope.
+/// A temporary folder made by mkdtemp() from `prefix` ("/tmp/opspace-build-") and the grader's
+/// pid ("/tmp/opspace-build-4242-Xy12Ab": a check can tell its folders from another grading's),
+/// tracked while it lives, removed with its contents when it goes out of scope.
 class TemporaryFolder {
  public:
   /// Throws std::runtime_error if the folder cannot be made.

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # An interrupted grading leaves nothing behind: the grader, interrupted while a student's 1b
 # controller hangs (Ctrl-C's SIGINT, then timeout's SIGTERM), must end with 128 + the signal,
-# say so, and leave no folder of its own in /tmp and no runner running. Run alone (ctest
-# RUN_SERIAL): the folders in /tmp are compared before and after.
+# say so, and leave no folder of its own in /tmp and no runner running. Its folders carry its
+# pid (/tmp/opspace-runners-<pid>-XXXXXX, and -build-, -sandbox-): other gradings on the
+# machine have their own. Run alone all the same (ctest RUN_SERIAL).
 #   bash check_interrupt.sh GRADER SOLUTIONS HANGING_CASE WORK
 set -uo pipefail
 grader=$1 solutions=$2 hanging=$3 work=$4
@@ -22,7 +23,6 @@ runners_of() {
 set -m  # background jobs in their own group, with SIGINT not ignored (as in a terminal)
 failed=0
 for signal in INT TERM; do
-  before=$(ls -d /tmp/opspace-* 2>/dev/null | sort)
   "$grader" --exercises "$work/exercises" --problem 1b > "$work/out-$signal.txt" 2> "$work/err-$signal.txt" &
   pid=$!
   for _ in $(seq 1 600); do
@@ -42,8 +42,7 @@ for signal in INT TERM; do
   wait "$pid"
   code=$?
   sleep 0.5
-  after=$(ls -d /tmp/opspace-* 2>/dev/null | sort)
-  left=$(comm -13 <(echo "$before") <(echo "$after") | tr '\n' ' ')
+  left=$(ls -d /tmp/opspace-*-"$pid"-* 2>/dev/null | tr '\n' ' ')
   expected=$((128 + $(kill -l "$signal")))
   still=""
   for runner in $runners; do
