@@ -43,6 +43,17 @@ void add(scmp_filter_ctx context, std::uint32_t action, const char* name, unsign
   check(seccomp_rule_add_array(context, action, nr, count, compare), std::string("rule for ") + name);
 }
 
+// A comparison of the first argument: what libseccomp's SCMP_A0 makes, without its compound
+// literal (C99, which clang refuses in C++ with -Wpedantic).
+scmp_arg_cmp first_argument(scmp_compare op, scmp_datum_t a, scmp_datum_t b = 0) {
+  scmp_arg_cmp compare{};
+  compare.arg = 0;
+  compare.op = op;
+  compare.datum_a = a;
+  compare.datum_b = b;
+  return compare;
+}
+
 }  // namespace
 
 std::vector<sock_filter> seccomp_filter(pid_t self) {
@@ -56,21 +67,21 @@ std::vector<sock_filter> seccomp_filter(pid_t self) {
 
   // The arguments are compared as 64-bit values: a value with its high half set is refused
   // even where the kernel reads only the low half (an int).
-  const scmp_arg_cmp not_unix = SCMP_A0(SCMP_CMP_NE, AF_UNIX);
+  const scmp_arg_cmp not_unix = first_argument(SCMP_CMP_NE, AF_UNIX);
   add(context, SCMP_ACT_ERRNO(EACCES), "socket", 1, &not_unix);
   const auto own = static_cast<scmp_datum_t>(self);
-  const scmp_arg_cmp not_self = SCMP_A0(SCMP_CMP_NE, own);
+  const scmp_arg_cmp not_self = first_argument(SCMP_CMP_NE, own);
   add(context, eperm, "tgkill", 1, &not_self);
   // kill(pid) is allowed for pid 0 and pid self: refused above self (and so every negative
   // pid, as an unsigned 64-bit value), and on 1 .. self-1. A rule compares an argument once,
   // so that range is cut into aligned blocks of 2^k pids, one rule each (at most 2 log2(self)):
   // a block [start, start + 2^k) is the pids whose bits above k equal start's.
-  const scmp_arg_cmp above = SCMP_A0(SCMP_CMP_GT, own);
+  const scmp_arg_cmp above = first_argument(SCMP_CMP_GT, own);
   add(context, eperm, "kill", 1, &above);
   for (scmp_datum_t start = 1; start < own;) {
     scmp_datum_t size = start & (~start + 1);  // the largest power of two dividing start
     while (start + size > own) size /= 2;
-    const scmp_arg_cmp block = SCMP_A0(SCMP_CMP_MASKED_EQ, ~(size - 1), start);
+    const scmp_arg_cmp block = first_argument(SCMP_CMP_MASKED_EQ, ~(size - 1), start);
     add(context, eperm, "kill", 1, &block);
     start += size;
   }
