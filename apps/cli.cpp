@@ -43,16 +43,28 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
         return bad(argv[0], s.str());
       }
       options.run.duration = duration;
+      options.duration_given = true;
+    } else if (arg == "--live") {
+      options.live = true;
+    } else if (arg == "--port" && has_value) {
+      const std::string value = argv[++i];
+      char* end = nullptr;
+      const long port = std::strtol(value.c_str(), &end, 10);
+      if (value.empty() || *end != '\0' || port < 0 || port > 65535) {
+        return bad(argv[0], "--port needs a port number from 0 (any free port) to 65535, not '" + value + "'");
+      }
+      options.port = static_cast<int>(port);
     } else if (program.csv && arg == "--csv" && has_value) {
       options.run.csv_path = argv[++i];
       if (options.run.csv_path.empty()) return bad(argv[0], "--csv needs a file path, not ''");
-    } else if ((arg == "--duration" || (program.csv && arg == "--csv")) && !has_value) {
+    } else if ((arg == "--duration" || arg == "--port" || (program.csv && arg == "--csv")) && !has_value) {
       return bad(argv[0], arg + " needs a value after it");
     } else if (!program.extra || !program.extra(arg)) {
       std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
       return program.usage(argv[0], 2);
     }
   }
+  if (options.port != 0 && !options.live) return bad(argv[0], "--port applies to --live only");
   return -1;
 }
 

@@ -31,6 +31,9 @@ struct Options {
   opspace::scenarios::RunOptions run;  ///< duration and CSV log of a run
   bool plots = true;                   ///< --no-plots: no PNG/SVG plots
   bool replay = true;                  ///< --no-replay: no 3D replay page
+  bool live = false;                   ///< --live: served live in the browser (docs/live.md)
+  int port = 0;                        ///< --port N: the live page's port (0: a free one)
+  bool duration_given = false;         ///< --duration was on the command line
 };
 
 /// The program's side of parse(): its usage text and the options only it takes.
@@ -44,7 +47,8 @@ struct Program {
 };
 
 /// Parses argv[first] .. argv[argc - 1] into `options`: --help, -h, --duration SECONDS (in
-/// (0, kMaxDuration]), --csv PATH (not empty), --no-plots, --no-replay, then program.extra.
+/// (0, kMaxDuration]), --csv PATH (not empty), --no-plots, --no-replay, --live, --port N (0 to
+/// 65535, with --live only), then program.extra.
 /// Returns -1 when the program goes on, otherwise its exit code: 0 after --help, 2 after a bad
 /// argument (a message naming it on stderr).
 int parse(int argc, char** argv, int first, const Program& program, Options& options);

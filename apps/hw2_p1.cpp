@@ -14,6 +14,11 @@
 #include "cli.hpp"
 #include "reference_runs.hpp"
 
+#ifdef OPSPACE_LIVE
+#include <opspace/live/p1b_lab.hpp>
+#include <opspace/live/run.hpp>
+#endif
+
 namespace {
 
 namespace p1b = opspace::scenarios::p1b;
@@ -22,7 +27,7 @@ using opspace::hw2::p1b::Part;
 int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
       << "usage: " << program << " 1|2|3|compare [--no-joint-damping] [--duration SECONDS] [--csv PATH]\n"
-      << "       [--no-plots] [--no-replay]\n"
+      << "       [--no-plots] [--no-replay] [--live [--port N]]\n"
       << "  1  PART1: hold the tip with PD control and joint damping\n"
       << "     (--no-joint-damping: question ii's variant without it)\n"
       << "  2  PART2: move joint 2 in the null space, pseudo-inverse projector\n"
@@ -32,7 +37,9 @@ int usage(const char* program, int code) {
       << cli::kMaxDuration << ")\n"
       << "  --csv       log file (default out/hw2-p1-part<PART>.csv in the repository); the plots and the replay page\n"
       << "              are written next to it, named after it (docs/visuals.md)\n"
-      << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n";
+      << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n"
+      << "  --live      run in real time in the browser: push the arm, switch PART (docs/live.md); until\n"
+      << "              Ctrl-C, or --duration simulated seconds. --port N: its port (default: a free one)\n";
   return code;
 }
 
@@ -112,6 +119,27 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
   return part2.failure.empty() && part3.failure.empty() ? 0 : 1;
 }
 
+#ifdef OPSPACE_LIVE
+/// `part` live in the browser until Ctrl-C; then the session's log, plots and replay page.
+int live(Part part, const cli::Options& options, const std::string& prefix) {
+  opspace::live::P1bLab lab(part, &opspace::hw2::p1b::control);
+  opspace::live::LiveOptions live;
+  live.port = options.port;
+  live.duration = options.duration_given ? options.run.duration : 0.0;
+  live.csv_path = prefix + "-live.csv";
+  std::cout << "problem 1b live, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
+  const opspace::live::LiveReport report = opspace::live::serve(lab, live, std::cout);
+  std::cout << "\nlive run ended: " << report.steps << " steps (" << report.steps * 1e-3 << " simulated s) in "
+            << report.wall_seconds << " s, " << report.frames << " frames, " << report.resyncs
+            << " resynchronisations\nlog:    " << live.csv_path << " (the last run: since the last reset)\n";
+  const p1b::Result& result = lab.result();
+  const Part last = lab.part();
+  return cli::finish(
+      options, prefix + "-live", result, [&] { return p1b::figures(result, last); },
+      [&] { return p1b::replay_scene(result, last); });
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -125,6 +153,14 @@ int main(int argc, char** argv) {
   options.run.progress = &std::cerr;
   const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);
   if (command.comparing) return cli::guarded(argv[0], [&] { return compare(options, prefix); });
+  if (options.live) {
+#ifdef OPSPACE_LIVE
+    return cli::guarded(argv[0], [&] { return live(part, options, prefix); });
+#else
+    std::cerr << argv[0] << ": this build has no live lab: install libcpp-httplib-dev (bash scripts/setup.sh) and build again\n";
+    return 2;
+#endif
+  }
   std::cout << "problem 1b, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
   return cli::guarded(argv[0], [&] {
     const p1b::Result result = p1b::run(part, &opspace::hw2::p1b::control, options.run);

@@ -15,20 +15,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 
-std::vector<std::string> csv_columns() {
-  return {"t",    "x",    "y",    "z",    "x_d",  "y_d",  "z_d",  "tip_error", "q1",   "q2",
-          "q3",   "q4",   "q5",   "q6",   "q2_d", "tau1", "tau2", "tau3",      "tau4", "tau5",
-          "tau6"};
-}
-
-std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d) {
-  std::vector<double> row = {s.t, s.x(0), s.x(1), s.x(2), x_d(0), x_d(1), x_d(2), (s.x - x_d).norm()};
-  for (int i = 0; i < 6; ++i) row.push_back(s.q(i));
-  row.push_back(s.q2_desired);
-  for (int i = 0; i < 6; ++i) row.push_back(s.tau(i));
-  return row;
-}
-
 void summarise(Result& result, const Eigen::Vector3d& x_d) {
   Summary& s = result.summary;
   double tip_sq = 0.0, q2_sq = 0.0;
@@ -53,6 +39,40 @@ void summarise(Result& result, const Eigen::Vector3d& x_d) {
     s.tip_error_rms = std::sqrt(tip_sq / n);
     s.q2_error_rms = std::sqrt(q2_sq / n);
   }
+}
+
+}  // namespace
+
+std::vector<std::string> csv_columns() {
+  return {"t",    "x",    "y",    "z",    "x_d",  "y_d",  "z_d",  "tip_error", "q1",   "q2",
+          "q3",   "q4",   "q5",   "q6",   "q2_d", "tau1", "tau2", "tau3",      "tau4", "tau5",
+          "tau6"};
+}
+
+std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d) {
+  std::vector<double> row = {s.t, s.x(0), s.x(1), s.x(2), x_d(0), x_d(1), x_d(2), (s.x - x_d).norm()};
+  for (int i = 0; i < 6; ++i) row.push_back(s.q(i));
+  row.push_back(s.q2_desired);
+  for (int i = 0; i < 6; ++i) row.push_back(s.tau(i));
+  return row;
+}
+
+namespace {
+
+// A live gain when one is set, else the goal's.
+double or_default(double live, double goal) { return std::isnan(live) ? goal : live; }
+
+std::string who(hw2::p1b::Part part) {
+  return "your " + describe(part).substr(0, describe(part).find(':')) + " controller";
+}
+
+SimulationSettings settings() {
+  // PART2's law spins the light wrist (its links weigh 0.1-0.8 kg and the model, like Bullet,
+  // has no motor inertia) to a few hundred rad/s: that wild motion is the lesson, so the run
+  // must not stop below kMaxJointSpeed.
+  SimulationSettings settings;
+  settings.max_joint_speed = kMaxJointSpeed;
+  return settings;
 }
 
 }  // namespace
@@ -102,29 +122,34 @@ std::string describe(hw2::p1b::Part part) {
   return "unknown part";
 }
 
-Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
-  const Model puma = load_urdf(robot_path(kRobotFile));
-  Observer observer(puma);
-  // PART2's law spins the light wrist (its links weigh 0.1-0.8 kg and the model, like Bullet,
-  // has no motor inertia) to a few hundred rad/s: that wild motion is the lesson, so the run
-  // must not stop below kMaxJointSpeed.
-  SimulationSettings settings;
-  settings.max_joint_speed = kMaxJointSpeed;
-  Simulation sim(puma, settings);
-  sim.set_state(initial_q(), Vector6d::Zero());
+Loop::Loop(hw2::p1b::Part law, Controller control)
+    : part(law), model_(load_urdf(robot_path(kRobotFile))), observer_(model_), sim_(model_, settings()),
+      control_(std::move(control)), named_part_(law), who_(who(law)) {
+  sim_.set_state(initial_q(), Vector6d::Zero());
+}
 
-  const std::string who = "your " + describe(part).substr(0, describe(part).find(':')) + " controller";
+Sample Loop::tick() {
+  const double t = sim_.time();
+  state_ = &observer_.observe(t, sim_.q(), sim_.qdot());
+  hw2::p1b::Goal g = goal(t, state_->q);
+  g.kpx = or_default(gains.kpx, g.kpx);
+  g.kvx = or_default(gains.kvx, g.kvx);
+  g.kvj = or_default(gains.kvj, g.kvj);
+  const Vector6d tau = control_(part, *state_, g);
+  if (part != named_part_) {  // the live lab switched laws
+    named_part_ = part;
+    who_ = who(part);
+  }
+  check_torque(tau, 6, t, who_);
+  return Sample{t, state_->x, state_->q, g.q_d(1), tau};
+}
+
+Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
+  Loop loop(part, std::move(control));
   const Eigen::Vector3d x_d = goal(0.0, initial_q()).x_d;
   Result result = run_closed_loop<Result>(
-      sim, "hw2-p1", "problem 1b, " + describe(part), csv_columns(), options,
-      [&](double t) {
-        const hw2::p1b::State& state = observer.observe(t, sim.q(), sim.qdot());
-        const hw2::p1b::Goal g = goal(t, state.q);
-        const Vector6d tau = control(part, state, g);
-        check_torque(tau, 6, t, who);
-        return Sample{t, state.x, state.q, g.q_d(1), tau};
-      },
-      [&](const Sample& s) { return csv_row(s, x_d); });
+      loop.simulation(), "hw2-p1", "problem 1b, " + describe(part), csv_columns(), options,
+      [&](double) { return loop.tick(); }, [&](const Sample& s) { return csv_row(s, x_d); });
   summarise(result, x_d);
   return result;
 }

@@ -68,6 +68,21 @@ double Simulation::time() const { return impl_->time; }
 
 void Simulation::step(const Eigen::Ref<const Eigen::VectorXd>& tau) { impl_->step(tau); }
 
+void Simulation::push(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) {
+  if (body < 0 || body >= impl_->dof()) {
+    throw std::out_of_range("opspace::Simulation::push: body index " + std::to_string(body) + " is not one of the " +
+                            std::to_string(impl_->dof()) + " bodies of '" + impl_->model.name + "'");
+  }
+  if (!force.allFinite() || !point.allFinite()) {
+    throw std::invalid_argument("opspace::Simulation::push: the force and its point must be finite");
+  }
+  // Bullet applies a link force at the link's centre of mass (its inertial frame's origin).
+  const Eigen::Vector3d com = bullet::to_eigen(impl_->mb->localPosToWorld(body, btVector3(0, 0, 0)));
+  impl_->push_force[body] += force;
+  impl_->push_torque[body] += (point - com).cross(force);
+  impl_->pushed = true;
+}
+
 Eigen::Isometry3d Simulation::body_pose(int body) const {
   if (body < 0 || body >= impl_->dof()) {
     if (body == -1) return Eigen::Isometry3d::Identity();

@@ -135,6 +135,8 @@ void Simulation::Impl::build() {
   qdot = Eigen::VectorXd::Zero(n);
   tau = Eigen::VectorXd::Zero(n);
   summary.clamped_steps.assign(n, 0);
+  push_force.assign(n, Eigen::Vector3d::Zero());
+  push_torque.assign(n, Eigen::Vector3d::Zero());
   summary.max_requested_torque.assign(n, 0.0);
   wrenches.assign(n, Wrench{});
   world_to_local.resize(n + 1);

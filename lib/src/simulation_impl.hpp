@@ -93,6 +93,10 @@ struct Simulation::Impl {
 
   std::vector<bullet::Principal> principal;  // C_i per body
   Eigen::VectorXd q, qdot, tau;      // tau: clamped torques of the last step
+  // External pushes for the next step (Simulation::push): force and torque about the COM,
+  // world frame, per body; `pushed` says whether any is non-zero.
+  std::vector<Eigen::Vector3d> push_force, push_torque;
+  bool pushed = false;
   double time = 0.0;
   bool failed = false;
   std::string failure;

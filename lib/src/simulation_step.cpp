@@ -80,6 +80,15 @@ void Simulation::Impl::step(const Eigen::Ref<const Eigen::VectorXd>& tau_request
     }
     mb->addJointTorque(i, tau[i]);
   }
+  if (pushed) {  // Bullet clears link forces after the step, as it does joint torques
+    for (int i = 0; i < n; ++i) {
+      mb->addLinkForce(i, to_bt(push_force[i]));
+      mb->addLinkTorque(i, to_bt(push_torque[i]));
+      push_force[i].setZero();
+      push_torque[i].setZero();
+    }
+    pushed = false;
+  }
   world.stepSimulation(settings.dt, 0, settings.dt);
   time = static_cast<double>(summary.steps + 1) * settings.dt;  // no accumulated rounding
   ++summary.steps;

@@ -135,6 +135,13 @@ class Simulation {
   /// torque, SimulationError if the new state is not finite or too fast.
   void step(const Eigen::Ref<const Eigen::VectorXd>& tau);
 
+  /// Adds an external force `force` (world frame, N) at the world point `point` on body `body`
+  /// for the next step() only, as Bullet's link force at the body's centre of mass plus the
+  /// torque (point - com) x force: a push from outside the robot, never a joint torque (the
+  /// effort limits and their count stay the controller's). Several calls before a step add up.
+  /// Throws std::out_of_range for a bad body, std::invalid_argument for a non-finite value.
+  void push(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point);
+
   /// Pose in the world of body i's frame (the URDF link frame).
   Eigen::Isometry3d body_pose(int body) const;
   /// Pose in the world of any URDF link, moving or merged; throws std::out_of_range naming it.

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "opspace/model.hpp"
 #include "opspace/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
+#include "opspace/simulation.hpp"
 
 namespace opspace::scenarios {
 
@@ -107,6 +109,42 @@ struct Summary {
 };
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded
+
+/// Gains the live lab may change (docs/live.md); NaN: the goal's own (goal()).
+struct GainOverrides {
+  double kpx = std::numeric_limits<double>::quiet_NaN();  ///< task stiffness (1/s^2)
+  double kvx = std::numeric_limits<double>::quiet_NaN();  ///< task damping (1/s)
+  double kvj = std::numeric_limits<double>::quiet_NaN();  ///< joint damping (1/s)
+};
+
+/// Problem 1b's closed loop one tick at a time, shared by run() and the live lab: the PUMA,
+/// its Observer and its simulation at q(0), at rest, t = 0.
+class Loop {
+ public:
+  /// Loads puma.urdf and builds the simulation; `control` applies law `part`.
+  Loop(hw2::p1b::Part part, Controller control);
+  /// Observes the State at the simulation's time, asks the controller and checks its torques
+  /// (ControllerError names `part`): the Sample of that instant, with the torques to apply.
+  Sample tick();
+  Simulation& simulation() { return sim_; }  ///< the simulated PUMA
+  const Model& model() const { return model_; }  ///< the controller's model of it
+  const hw2::p1b::State& state() const { return *state_; }  ///< the last tick's State
+  hw2::p1b::Part part;      ///< the law control() applies from the next tick
+  GainOverrides gains;      ///< live changes to goal()'s gains
+
+ private:
+  Model model_;
+  Observer observer_;
+  Simulation sim_;
+  Controller control_;
+  const hw2::p1b::State* state_ = nullptr;
+  hw2::p1b::Part named_part_;  // the part `who_` names ("your PART3 controller")
+  std::string who_;
+};
+
+/// The CSV log's columns, and one Sample's row (x_d: the tip's target).
+std::vector<std::string> csv_columns();
+std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d);
 
 /// Runs problem 1b's scenario with `control` applying law `part` every 1 ms step.
 Result run(hw2::p1b::Part part, Controller control, const RunOptions& options);

@@ -1,0 +1,74 @@
+// Problem 1b live (live/p1b_lab.hpp).
+#include "opspace/live/p1b_lab.hpp"
+
+namespace opspace::live {
+
+namespace p1b = scenarios::p1b;
+using hw2::p1b::Part;
+
+namespace {
+
+constexpr Part kLaws[] = {Part::kTipPd, Part::kPseudoInverseNullspace, Part::kDynamicallyConsistentNullspace};
+
+int law_of(Part part) {
+  for (int i = 0; i < 3; ++i) {
+    if (kLaws[i] == part) return i;
+  }
+  return 2;
+}
+
+LabInfo describe_lab(Part part) {
+  LabInfo info;
+  info.program = "hw2-p1";
+  info.title = "hw2-p1: problem 1b on the PUMA 560, live";
+  info.subtitle = "push the elbow: under PART3 the tip holds, under PART2 it wanders";
+  for (const Part p : kLaws) info.laws.push_back(p1b::describe(p));
+  info.law = law_of(part);
+  const hw2::p1b::Goal g = p1b::goal(0.0, p1b::initial_q());
+  // Ranges that keep the run stable: the tip PD is critically damped at kvx = 2 sqrt(kpx).
+  info.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},
+                {"kvx", "kv, tip (1/s)", 2.0, 60.0, g.kvx},
+                {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
+  info.plots = {{"tip error", "mm", {{"|x - x_d|", "#e74c3c"}}},
+                {"joint 2", "rad", {{"q2", "#2c7be5"}, {"q2_d", "#7f8c8d"}}}};
+  info.markers = {{"x_d", "target x_d", "#e74c3c", 0.02}, {"x", "tip x", "#2c7be5", 0.012}};
+  return info;
+}
+
+}  // namespace
+
+P1bLab::P1bLab(Part part, p1b::Controller control)
+    : info_(describe_lab(part)), control_(std::move(control)), x_d_(p1b::goal(0.0, p1b::initial_q()).x_d) {
+  reset();
+}
+
+void P1bLab::reset() {
+  loop_ = std::make_unique<p1b::Loop>(kLaws[info_.law], control_);
+  result_ = p1b::Result{};
+}
+
+void P1bLab::set_law(int law) { loop_->part = kLaws[law]; }
+
+void P1bLab::set_gain(int gain, double value) {
+  double* gains[] = {&loop_->gains.kpx, &loop_->gains.kvx, &loop_->gains.kvj};
+  *gains[gain] = value;
+}
+
+const Eigen::VectorXd& P1bLab::tick() {
+  result_.samples.push_back(loop_->tick());
+  tau_ = result_.samples.back().tau;
+  return tau_;
+}
+
+void P1bLab::plot_values(std::vector<double>& values) const {
+  const p1b::Sample& s = result_.samples.back();
+  values = {1000.0 * (s.x - x_d_).norm(), s.q(1), s.q2_desired};
+}
+
+void P1bLab::marker_positions(std::vector<Eigen::Vector3d>& positions) const {
+  positions = {x_d_, result_.samples.empty() ? x_d_ : result_.samples.back().x};
+}
+
+std::vector<double> P1bLab::csv_row() const { return p1b::csv_row(result_.samples.back(), x_d_); }
+
+}  // namespace opspace::live
