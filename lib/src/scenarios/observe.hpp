@@ -1,4 +1,4 @@
-// What the Observers of scenario_p1b/p2/p4.cpp share: the joint-space part of a State, the tip
+// What the Observers of p1b.cpp, p2.cpp and p4.cpp share: the joint-space part of a State, the tip
 // of a point task, and the check of the robot's number of joints.
 #pragma once
 

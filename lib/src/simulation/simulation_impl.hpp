@@ -1,6 +1,6 @@
-// The state of a Simulation (simulation.hpp) and its Bullet world, private to lib/src:
-// simulation_build.cpp builds the world from a Model, simulation_step.cpp steps it and reads
-// the contacts, simulation.cpp is the public class. See docs/simulation.md.
+// The state of a Simulation (simulation.hpp) and its Bullet world, private to lib/src/simulation:
+// build.cpp builds the world from a Model, step.cpp steps it and reads the contacts,
+// simulation.cpp is the public class. See docs/simulation.md.
 
 #pragma once
 
@@ -113,7 +113,7 @@ struct Simulation::Impl {
   ~Impl();
   int dof() const { return model.dof(); }
 
-  // simulation_build.cpp: checks and world building.
+  // build.cpp: checks and world building.
   void check_vector(const Eigen::Ref<const Eigen::VectorXd>& v, const char* what) const;
   void refresh_kinematics();
   void build();
@@ -122,7 +122,7 @@ struct Simulation::Impl {
   void reserve_contacts();
   int add_obstacle(std::unique_ptr<btCollisionShape> shape, const btTransform& pose, const Material& m);
 
-  // simulation_step.cpp: a step and what it reads back.
+  // step.cpp: a step and what it reads back.
   Eigen::Isometry3d body_pose(int i) const;
   void gather_contacts();
   [[noreturn]] void fail(int joint, const std::string& cause);

@@ -1,4 +1,4 @@
-/// @file dynamics.hpp
+/// @file algorithms/dynamics.hpp
 /// Joint-space dynamics A(q) qdd + b(q, qdot) + g(q) = tau of a Model.
 /// Each function fills its member of Data and returns a reference to it; none allocates.
 /// Source: R. Featherstone, Rigid Body Dynamics Algorithms, Springer 2008 (RBDA): the

@@ -1,4 +1,4 @@
-/// @file euler_params.hpp
+/// @file algorithms/euler_params.hpp
 /// Euler parameters (unit quaternions) as the problem set writes them, scalar first:
 /// lambda = (lambda_0, lambda_1, lambda_2, lambda_3), lambda_0 = cos(theta/2) and
 /// (lambda_1, lambda_2, lambda_3) = sin(theta/2) u for a rotation by theta about the unit axis u.

@@ -1,4 +1,4 @@
-/// @file kinematics.hpp
+/// @file algorithms/kinematics.hpp
 /// Poses, point Jacobians J0 = [Jv; Jw] and Jdot qdot, all expressed in the base frame.
 /// Call forward_kinematics() first: the other functions read data.body_pose. Source: R.
 /// Featherstone, Rigid Body Dynamics Algorithms, Springer 2008, chapter 4 (joint models and

@@ -1,4 +1,4 @@
-/// @file linalg.hpp
+/// @file algorithms/linalg.hpp
 /// Generalized inverses and null-space projectors of a task Jacobian J (m x n, m <= n).
 ///
 /// Conventions (problem set, problem 1a):

@@ -1,4 +1,4 @@
-/// @file opspace.hpp
+/// @file algorithms/opspace.hpp
 /// The operational-space matrices of a task x with Jacobian J (m x n) on a robot with mass
 /// matrix A (n x n) and gravity torques g (problem set 2, problems 1b-3):
 ///

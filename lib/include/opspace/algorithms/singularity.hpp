@@ -1,4 +1,4 @@
-/// @file singularity.hpp
+/// @file algorithms/singularity.hpp
 /// Singularities of a point's positioning task (problem 4): which directions a point can move
 /// along, which it cannot, and of which type each blocked direction is. Source: the problem
 /// set's problem 4 (singular directions from the SVD of Jv, Type I and Type II by the second-

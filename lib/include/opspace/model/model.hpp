@@ -1,4 +1,4 @@
-/// @file model.hpp
+/// @file model/model.hpp
 /// The robot description (Model, built once, never changed by algorithms) and the per-call
 /// workspace (Data) that the algorithms of kinematics.hpp and dynamics.hpp fill in.
 ///

@@ -1,4 +1,4 @@
-/// @file model_text.hpp
+/// @file model/model_text.hpp
 /// A Model as plain text, for programs that cannot read URDF (the explorer's WebAssembly
 /// module has no urdfdom): the native side loads the URDF and writes the text; the other side
 /// reads it back into the same Model, number for number (17 significant digits round-trip a

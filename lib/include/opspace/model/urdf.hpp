@@ -1,4 +1,4 @@
-/// @file urdf.hpp
+/// @file model/urdf.hpp
 /// Model from a URDF file, parsed with urdfdom.
 #pragma once
 

@@ -1,4 +1,4 @@
-/// @file closed_loop.hpp
+/// @file simulation/closed_loop.hpp
 /// The scaffolding around a controller: checking what it returns, reporting progress,
 /// writing a CSV log.
 #pragma once

@@ -1,4 +1,4 @@
-/// @file simulation.hpp
+/// @file simulation/simulation.hpp
 /// A physics simulation of a Model on Bullet's btMultiBody (Featherstone), double precision.
 ///
 /// The same Model (one URDF) builds the controller's dynamics and this simulation, so the two

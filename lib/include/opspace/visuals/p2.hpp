@@ -1,4 +1,4 @@
-/// @file scenarios/p2_visuals.hpp
+/// @file visuals/p2.hpp
 /// The pictures of a problem-2 run (docs/visuals.md): plots and the 3D replay scene.
 #pragma once
 

@@ -1,4 +1,4 @@
-/// @file plot.hpp
+/// @file visuals/plot.hpp
 /// Plots of a run as PNG and SVG, drawn by gnuplot (Debian's gnuplot-nox). A problem fills
 /// Figures (panels of curves and reference levels) after its run; render() writes, next to
 /// the log, one data file and one gnuplot script per figure and runs gnuplot on it. Without

@@ -1,4 +1,4 @@
-/// @file replay.hpp
+/// @file visuals/replay.hpp
 /// A 3D replay of a run: one self-contained HTML page that animates the logged joint motion
 /// with the robot drawn from its URDF visual shapes, plus markers (desired targets, the tip's
 /// path, force arrows, contact planes). The viewer is three.js bundled at build time (web/),

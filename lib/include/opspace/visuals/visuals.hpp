@@ -1,4 +1,4 @@
-/// @file visuals.hpp
+/// @file visuals/visuals.hpp
 /// What a program leaves after its run besides the CSV log: the plots (plot.hpp) and the 3D
 /// replay page (replay.hpp), named after the log, their paths printed. Called once the run
 /// is over, so that the control loop never waits on it.
