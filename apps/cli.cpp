@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include <opspace/scenarios/watchdog.hpp>
-#include <opspace/visuals.hpp>
+#include <opspace/visuals/visuals.hpp>
 
 namespace cli {
 

@@ -12,8 +12,8 @@
 
 #include <opspace/hw2/p1b.hpp>
 #include <opspace/hw2/p4.hpp>
-#include <opspace/plot.hpp>
-#include <opspace/replay.hpp>
+#include <opspace/visuals/plot.hpp>
+#include <opspace/visuals/replay.hpp>
 #include <opspace/scenarios/common.hpp>
 
 #include "verdict.hpp"

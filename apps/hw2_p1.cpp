@@ -8,8 +8,8 @@
 
 #include <opspace/hw2/p1b.hpp>
 #include <opspace/scenarios.hpp>
-#include <opspace/scenarios/p1b_visuals.hpp>
-#include <opspace/visuals.hpp>
+#include <opspace/visuals/p1b.hpp>
+#include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"
 #include "reference_runs.hpp"

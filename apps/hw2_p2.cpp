@@ -6,8 +6,8 @@
 
 #include <opspace/hw2/p2.hpp>
 #include <opspace/scenarios.hpp>
-#include <opspace/scenarios/p2_visuals.hpp>
-#include <opspace/visuals.hpp>
+#include <opspace/visuals/p2.hpp>
+#include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"
 #include "reference_runs.hpp"

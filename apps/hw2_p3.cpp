@@ -7,8 +7,8 @@
 
 #include <opspace/hw2/p3.hpp>
 #include <opspace/scenarios.hpp>
-#include <opspace/scenarios/p3_visuals.hpp>
-#include <opspace/visuals.hpp>
+#include <opspace/visuals/p3.hpp>
+#include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"
 #include "reference_runs.hpp"

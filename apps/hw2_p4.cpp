@@ -11,10 +11,10 @@
 
 #include <opspace/hw2/p4.hpp>
 #include <opspace/scenarios.hpp>
-#include <opspace/scenarios/p4_visuals.hpp>
+#include <opspace/visuals/p4.hpp>
 #include <opspace/scenarios/watchdog.hpp>
-#include <opspace/visuals.hpp>
-#include <opspace/urdf.hpp>
+#include <opspace/visuals/visuals.hpp>
+#include <opspace/model/urdf.hpp>
 
 #include "cli.hpp"
 #include "reference_runs.hpp"

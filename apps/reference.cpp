@@ -26,7 +26,7 @@
 #include <opspace/hw2/p3.hpp>
 #include <opspace/hw2/p4.hpp>
 #include <opspace/scenarios.hpp>
-#include <opspace/urdf.hpp>
+#include <opspace/model/urdf.hpp>
 
 #include "verdict.hpp"
 

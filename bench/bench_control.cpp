@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/opspace.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/model/urdf.hpp"
 
 namespace {
 

@@ -5,10 +5,10 @@
 
 #include <Eigen/Core>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/simulation.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/simulation/simulation.hpp"
+#include "opspace/model/urdf.hpp"
 
 namespace {
 

@@ -115,8 +115,9 @@ for gone in solutions tests/mutants tests/tamper tests/graded/p1b.cpp build/rele
   [ ! -e "$REPO/$gone" ] || fail "$REPO/$gone is still there"
 done
 if [ "$(id -u)" -eq 0 ]; then
-  for secret in "$BUILD/apps/hw2-grade" "$REPO/tests/graded/CMakeLists.txt" "$REPO/lib/src/pp_robot.cpp" \
-                "$REPO/lib/include/opspace/linalg.hpp" "$ROOT/run_autograder"; do
+  for secret in "$BUILD/apps/hw2-grade" "$REPO/tests/graded/CMakeLists.txt" \
+                "$REPO/lib/src/algorithms/pp_robot.cpp" \
+                "$REPO/lib/include/opspace/algorithms/linalg.hpp" "$ROOT/run_autograder"; do
     [ -e "$secret" ] || continue
     if runuser -u "$RUNNER_USER" -- head -c1 "$secret" > /dev/null 2>&1; then
       fail "$RUNNER_USER can read $secret"

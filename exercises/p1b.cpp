@@ -5,8 +5,8 @@
 // `s` holds what the robot knows now: s.q, s.dq, the tip s.x, s.dx, its Jacobian s.Jv,
 // the mass matrix s.A, gravity s.g, and the task quantities s.Lambda_v, s.Jbar_v, s.p.
 // `goal` holds x_d, q_d and the gains kpx, kvx, kpj, kvj.
-// opspace::pseudo_inverse(Jv) (include <opspace/linalg.hpp>) computes a pseudo-inverse,
-// or write J^T (J J^T)^-1 yourself.
+// opspace::pseudo_inverse(Jv) (include <opspace/algorithms/linalg.hpp>) computes a
+// pseudo-inverse, or write J^T (J J^T)^-1 yourself.
 #include <opspace/hw2/p1b.hpp>
 
 namespace opspace::hw2::p1b {

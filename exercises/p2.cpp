@@ -11,8 +11,8 @@
 //
 //   E_r(lambda) = 1/2 [[-l1, -l2, -l3], [l0, l3, -l2], [-l3, l0, l1], [l2, -l1, l0]]
 //   E = diag(I3, E_r),  E^+ = diag(I3, E_r^+),  E_r^+ = (E_r^T E_r)^-1 E_r^T
-// opspace::representation_matrix_pinv(lambda) (include <opspace/euler_params.hpp>) computes
-// E^+, or write it yourself.
+// opspace::representation_matrix_pinv(lambda) (include <opspace/algorithms/euler_params.hpp>)
+// computes E^+, or write it yourself.
 #include <opspace/hw2/p2.hpp>
 
 namespace opspace::hw2::p2 {

@@ -8,7 +8,8 @@
 // computed by the library), the desired force goal.F_d = [F_x, F_y, F_z, M_x, M_y, M_z] and the
 // gains kpx, kvx, kvj.
 // opspace::representation_matrix_pinv(lambda) and opspace::orientation_error(lambda, lambda_d)
-// (include <opspace/euler_params.hpp>) compute E^+ and delta_phi, or reuse your problem 2.
+// (include <opspace/algorithms/euler_params.hpp>) compute E^+ and delta_phi, or reuse your
+// problem 2.
 #include <opspace/hw2/p3.hpp>
 
 namespace opspace::hw2::p3 {

@@ -1,5 +1,5 @@
 // Problem 3, reference solution: the equations of the problem set.
-#include <opspace/euler_params.hpp>
+#include <opspace/algorithms/euler_params.hpp>
 #include <opspace/hw2/p3.hpp>
 
 namespace opspace::hw2::p3 {

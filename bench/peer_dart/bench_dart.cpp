@@ -18,8 +18,8 @@
 #include <dart/dart.hpp>
 #include <dart/utils/urdf/urdf.hpp>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/model/urdf.hpp"
 
 namespace {
 

@@ -26,9 +26,9 @@
 #include <pinocchio/parsers/urdf.hpp>
 
 #include "../robots.hpp"
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/urdf.hpp"
 
 namespace {
 

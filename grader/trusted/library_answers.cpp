@@ -35,7 +35,7 @@ std::vector<Oracle> oracles(const std::string& key) {
   if (key == "1a") {
     const std::string ginv = "iv. the pseudo-inverse is J^T (J J^T)^-1", split = "vi. J+ shares dx equally between the joints, Jbar moves only joint 2";
     const std::string jbar = "vi. the inertia-weighted inverse moves only the light link";
-    out.push_back({"opspace::pp::", "the closed forms of problem 1a (lib/include/opspace/pp_robot.hpp)", {}});
+    out.push_back({"opspace::pp::", "the closed forms of problem 1a (lib/include/opspace/algorithms/pp_robot.hpp)", {}});
     out.push_back({"opspace::pseudo_inverse", "J+ (linalg.hpp)", {ginv, split}});
     out.push_back({"opspace::weighted_inverse", "J# (linalg.hpp)",
                    {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1", jbar, split}});

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "explore.hpp"
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
 #include "page_data.hpp"
 #include "robots.hpp"
 

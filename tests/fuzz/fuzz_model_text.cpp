@@ -1,5 +1,5 @@
-// libFuzzer target: read_model_text() (lib/src/model_text.cpp), which reads a Model written as
-// text (the explorer's page hands each robot to its WebAssembly module this way). Each input must
+// libFuzzer target: read_model_text() (lib/src/model/model_text.cpp), which reads a Model written
+// as text (the explorer's page hands each robot to its WebAssembly module this way). Each input must
 // either give a Model whose every number is usable (fuzz::check_model) and whose text reads back
 // to the same text, or be refused with std::invalid_argument "fuzz.model:<line>: <cause>", the
 // line one of the input's (0 for an input without lines), no control character in it. Any other
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <opspace/model_text.hpp>
+#include <opspace/model/model_text.hpp>
 
 #include "model_checks.hpp"
 

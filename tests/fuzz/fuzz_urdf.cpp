@@ -1,4 +1,4 @@
-// libFuzzer target: parse_urdf() (lib/src/urdf.cpp: a markup scan, TinyXML, urdfdom, then our
+// libFuzzer target: parse_urdf() (lib/src/model/urdf.cpp: a markup scan, TinyXML, urdfdom, then our
 // checks) on arbitrary text. Each input must either give a Model whose every number is usable
 // (check_model) or be refused with a UrdfError "fuzz.urdf:<line>: <cause>" or "fuzz.urdf:
 // <cause>" (a line of the input, no control character). Any other exception, a sanitizer
@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include <opspace/urdf.hpp>
+#include <opspace/model/urdf.hpp>
 
 #include "model_checks.hpp"
 

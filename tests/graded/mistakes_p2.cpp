@@ -1,6 +1,6 @@
 // Known mistakes of problem 2. The law is written out with one mistake made; 2(a)'s mistake
 // wraps the function it is given (the reference solutions, or the grader's oracle).
-#include <opspace/euler_params.hpp>
+#include <opspace/algorithms/euler_params.hpp>
 #include <opspace/hw2/p2.hpp>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Known mistakes of problem 3. The law is written out with one mistake made.
-#include <opspace/euler_params.hpp>
+#include <opspace/algorithms/euler_params.hpp>
 #include <opspace/hw2/p3.hpp>
 
 #include "mistakes.hpp"

@@ -1,7 +1,7 @@
 // Known mistakes of problem 4. Each replaces one function, or wraps the law it is given (the
 // reference solutions, or the grader's oracle).
 #include <opspace/hw2/p4.hpp>
-#include <opspace/linalg.hpp>
+#include <opspace/algorithms/linalg.hpp>
 
 #include "mistakes.hpp"
 

@@ -1,10 +1,10 @@
 // Graded tests of problem 1a. Every expected value comes from an oracle with a reason:
-// the closed forms of lib/include/opspace/pp_robot.hpp (derived by hand from the problem set
-// and cross-checked in tests/lib/test_pp_robot.cpp), or the general inverses of linalg.hpp
+// the closed forms of lib/include/opspace/algorithms/pp_robot.hpp (derived by hand from the problem
+// set and cross-checked in tests/lib/test_pp_robot.cpp), or the general inverses of linalg.hpp
 // at random Jacobians and weights, so that an answer hard-coded for m1 = 10, m2 = 5 or
 // J = [1 1] cannot pass.
-#include <opspace/linalg.hpp>
-#include <opspace/pp_robot.hpp>
+#include <opspace/algorithms/linalg.hpp>
+#include <opspace/algorithms/pp_robot.hpp>
 
 #include "suite.hpp"
 #include "support/random.hpp"

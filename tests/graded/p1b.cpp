@@ -3,9 +3,9 @@
 //   equation written out here from the library's quantities (State from the Observer);
 // - the behaviour: the closed loop on the Bullet simulation, with bounds whose reasons are
 //   given beside them.
-#include <opspace/linalg.hpp>
+#include <opspace/algorithms/linalg.hpp>
 #include <opspace/scenarios.hpp>
-#include <opspace/urdf.hpp>
+#include <opspace/model/urdf.hpp>
 
 #include <cstdio>
 #include <map>

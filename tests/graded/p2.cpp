@@ -5,9 +5,9 @@
 //   equation written out here from the library's quantities (State from the Observer);
 // - the behaviour: the closed loop on the Bullet simulation, with bounds whose reasons are
 //   given beside them.
-#include <opspace/euler_params.hpp>
+#include <opspace/algorithms/euler_params.hpp>
 #include <opspace/scenarios.hpp>
-#include <opspace/urdf.hpp>
+#include <opspace/model/urdf.hpp>
 
 #include <cmath>
 #include <cstdio>

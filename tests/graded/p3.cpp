@@ -4,9 +4,9 @@
 //   equation written out here from the library's quantities (problem 2's State);
 // - the behaviour: the closed loop on the Bullet simulation with the plane x = 0.05, with
 //   bounds whose reasons are given beside them.
-#include <opspace/euler_params.hpp>
+#include <opspace/algorithms/euler_params.hpp>
 #include <opspace/scenarios.hpp>
-#include <opspace/urdf.hpp>
+#include <opspace/model/urdf.hpp>
 
 #include <cmath>
 #include <map>

@@ -5,7 +5,7 @@
 // - question v: the law at random states against the equation written out here, and the
 //   closed loop on the Bullet simulation, beside the plain operational-space controller.
 #include <opspace/scenarios.hpp>
-#include <opspace/urdf.hpp>
+#include <opspace/model/urdf.hpp>
 
 #include <cmath>
 #include <cstdio>

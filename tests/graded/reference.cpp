@@ -2,10 +2,10 @@
 // closed forms and general formulas its tests compare with (p1a.cpp: pp_robot.hpp and
 // linalg.hpp), the laws written out in p1b.cpp ... p4.cpp, and the library's singularity
 // analysis for problem 4's questions i-iv.
-#include <opspace/euler_params.hpp>
-#include <opspace/linalg.hpp>
-#include <opspace/pp_robot.hpp>
-#include <opspace/singularity.hpp>
+#include <opspace/algorithms/euler_params.hpp>
+#include <opspace/algorithms/linalg.hpp>
+#include <opspace/algorithms/pp_robot.hpp>
+#include <opspace/algorithms/singularity.hpp>
 
 #include "oracles.hpp"
 #include "support/problem2.hpp"

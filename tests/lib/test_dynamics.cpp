@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/pp_robot.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/algorithms/pp_robot.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;

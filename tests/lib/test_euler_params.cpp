@@ -6,8 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "opspace/euler_params.hpp"
-#include "opspace/linalg.hpp"
+#include "opspace/algorithms/euler_params.hpp"
+#include "opspace/algorithms/linalg.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;

@@ -1,14 +1,14 @@
 // forward_kinematics composes rotations about coordinate axes by a plane rotation of two columns
-// and about any other axis by Rodrigues' formula (lib/src/spatial.hpp): both must give the
-// definition, oMi = oMparent * placement * joint(q_i), on every robot and on a test tree with
+// and about any other axis by Rodrigues' formula (lib/src/algorithms/spatial.hpp): both must give
+// the definition, oMi = oMparent * placement * joint(q_i), on every robot and on a test tree with
 // tilted, signed and prismatic axes (tests/data/tilted_axes.urdf, which test_dynamics.cpp also
 // checks against the identities of rigid-body dynamics).
 #include <doctest/doctest.h>
 
 #include <string>
 
-#include "opspace/kinematics.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "opspace/kinematics.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "opspace/linalg.hpp"
+#include "opspace/algorithms/linalg.hpp"
 #include "support/random.hpp"
 
 using opspace::testing::Random;

@@ -2,9 +2,9 @@
 // pass: it must give what the two calls give, and leave the poses of its own q in Data.
 #include <doctest/doctest.h>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;

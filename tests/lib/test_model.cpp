@@ -2,8 +2,8 @@
 // fail with messages that name what was asked for and the model.
 #include <doctest/doctest.h>
 
-#include "opspace/model.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/model/model.hpp"
+#include "opspace/model/urdf.hpp"
 
 using namespace opspace;
 

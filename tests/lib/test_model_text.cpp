@@ -9,9 +9,9 @@
 #include <string>
 #include <utility>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/model_text.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/model/model_text.hpp"
+#include "opspace/model/urdf.hpp"
 
 using opspace::Model;
 using opspace::read_model_text;
@@ -172,7 +172,7 @@ TEST_CASE("a joint without limits, as a continuous joint loads, survives the tex
 }
 
 TEST_CASE("a model text that the URDF loader could not have made is refused with its line") {
-  // Each edit breaks one rule that load_urdf enforces (lib/src/urdf.cpp) on the PP robot's d2
+  // Each edit breaks one rule that load_urdf enforces (lib/src/model/urdf.cpp) on the PP robot's d2
   // (line 6), its first visual shape, or its base (line 4).
   const Model pp = opspace::load_urdf(opspace::robot_path("pp.urdf"));
   const int visual_line = line_of(write_model_text(pp), "visual");

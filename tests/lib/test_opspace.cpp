@@ -4,11 +4,11 @@
 
 #include <Eigen/Dense>
 
-#include "opspace/linalg.hpp"
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/opspace.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/linalg.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/algorithms/opspace.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using opspace::testing::Random;

@@ -3,8 +3,8 @@
 // definition x_ee = d1 + d2 for J, and the general formulas of linalg.hpp for the inverses.
 #include <doctest/doctest.h>
 
-#include "opspace/linalg.hpp"
-#include "opspace/pp_robot.hpp"
+#include "opspace/algorithms/linalg.hpp"
+#include "opspace/algorithms/pp_robot.hpp"
 #include "support/random.hpp"
 
 namespace pp = opspace::pp;

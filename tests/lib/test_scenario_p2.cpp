@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "opspace/euler_params.hpp"
+#include "opspace/algorithms/euler_params.hpp"
 #include "opspace/scenarios.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/problem2.hpp"
 #include "support/random.hpp"
 

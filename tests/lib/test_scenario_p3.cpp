@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "opspace/scenarios.hpp"
-#include "opspace/simulation.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/simulation/simulation.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;

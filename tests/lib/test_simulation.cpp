@@ -11,7 +11,7 @@
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 
-#include "opspace/simulation.hpp"
+#include "opspace/simulation/simulation.hpp"
 #include "support/random.hpp"
 
 using opspace::Body;

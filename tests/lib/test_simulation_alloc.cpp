@@ -11,10 +11,10 @@
 #include <cstdlib>
 #include <new>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/simulation.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/simulation/simulation.hpp"
+#include "opspace/model/urdf.hpp"
 
 namespace {
 std::atomic<long> g_news{0};

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <string>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/simulation.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/simulation/simulation.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using opspace::Data;

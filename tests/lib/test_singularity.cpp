@@ -8,9 +8,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "opspace/kinematics.hpp"
-#include "opspace/singularity.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/algorithms/singularity.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using opspace::SingularityType;

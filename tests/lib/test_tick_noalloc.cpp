@@ -6,9 +6,9 @@
 
 #include <utility>
 
-#include "opspace/opspace.hpp"
+#include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/model/urdf.hpp"
 #include "support/count_allocations.hpp"
 
 using opspace::hw2::p1b::Part;

@@ -11,9 +11,9 @@
 #include <fstream>
 #include <string>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/urdf.hpp"
 
 using namespace opspace;
 

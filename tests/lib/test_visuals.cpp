@@ -9,10 +9,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "opspace/plot.hpp"
-#include "opspace/replay.hpp"
-#include "opspace/urdf.hpp"
-#include "opspace/visuals.hpp"
+#include "opspace/visuals/plot.hpp"
+#include "opspace/visuals/replay.hpp"
+#include "opspace/model/urdf.hpp"
+#include "opspace/visuals/visuals.hpp"
 
 namespace fs = std::filesystem;
 using namespace opspace;

@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "opspace/kinematics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
 #include "opspace/live/push.hpp"
 #include "opspace/scenarios/p1b.hpp"
-#include "opspace/simulation.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/simulation/simulation.hpp"
+#include "opspace/model/urdf.hpp"
 
 using namespace opspace;
 

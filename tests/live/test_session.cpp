@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "opspace/hw2/p1b.hpp"
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
 #include "opspace/live/p1b_lab.hpp"
 #include "opspace/live/run.hpp"
 #include "opspace/live/session.hpp"

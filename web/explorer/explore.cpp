@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "opspace/dynamics.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/linalg.hpp"
+#include "opspace/algorithms/dynamics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/algorithms/linalg.hpp"
 #include "page_json.hpp"
 
 namespace opspace::explore {

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "opspace/model.hpp"
-#include "opspace/singularity.hpp"
+#include "opspace/model/model.hpp"
+#include "opspace/algorithms/singularity.hpp"
 
 namespace opspace::explore {
 

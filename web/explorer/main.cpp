@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "explore.hpp"
-#include "opspace/model_text.hpp"
+#include "opspace/model/model_text.hpp"
 #include "page_data.hpp"
 #include "robots.hpp"
 

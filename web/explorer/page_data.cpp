@@ -2,8 +2,8 @@
 #include "page_data.hpp"
 
 #include "explore.hpp"
-#include "opspace/model_text.hpp"
-#include "opspace/replay.hpp"
+#include "opspace/model/model_text.hpp"
+#include "opspace/visuals/replay.hpp"
 #include "page_json.hpp"
 
 namespace opspace::explore {
@@ -49,7 +49,7 @@ Json robot_data(const Robot& r) {
               {"joints", std::move(joints)},
               {"q0", std::move(q0)},
               {"self_joint", r.self_joint},
-              // The replay's own JSON text (lib/src/replay.cpp), read back as JSON.
+              // The replay's own JSON text (lib/src/visuals/replay.cpp), read back as JSON.
               {"scene", Json::parse(replay::scene_json(scene))}};
 }
 

@@ -5,7 +5,7 @@
 #include "opspace/scenarios/p1b.hpp"
 #include "opspace/scenarios/p2.hpp"
 #include "opspace/scenarios/p4.hpp"
-#include "opspace/urdf.hpp"
+#include "opspace/model/urdf.hpp"
 
 namespace opspace::explore {
 

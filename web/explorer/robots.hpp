@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "explore.hpp"
-#include "opspace/model.hpp"
+#include "opspace/model/model.hpp"
 
 namespace opspace::explore {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "explore.hpp"
-#include "opspace/model_text.hpp"
+#include "opspace/model/model_text.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // The opspace replay viewer. esbuild bundles this file with three.js into one script
-// (build/<preset>/web/opspace-replay.js) that lib/src/replay.cpp inlines into each replay
+// (build/<preset>/web/opspace-replay.js) that lib/src/visuals/replay.cpp inlines into each replay
 // page, after a <script id="opspace-replay-data" type="application/json"> block holding the
 // run: shapes of the robot, per-frame body poses, markers (targets, trails, arrows, planes)
 // and head-up values. The data format is described in docs/visuals.md.

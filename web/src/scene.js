@@ -1,5 +1,5 @@
 // What the replay page (replay.js) and the explorer page (explorer.js) draw alike: the robot
-// from its URDF visual shapes, as lib/src/replay.cpp writes them (replay::scene_json): each
+// from its URDF visual shapes, as lib/src/visuals/replay.cpp writes them (replay::scene_json): each
 // shape's kind, size, colour, body and placement [px, py, pz, qx, qy, qz, qw] in its body frame.
 import * as THREE from 'three';
 

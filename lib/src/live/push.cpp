@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "opspace/dynamics.hpp"
+#include "opspace/algorithms/dynamics.hpp"
 
 namespace opspace::live {
 

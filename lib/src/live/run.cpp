@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "opspace/live/server.hpp"
-#include "opspace/replay.hpp"
+#include "opspace/visuals/replay.hpp"
 
 namespace opspace::live {
 

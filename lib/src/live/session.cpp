@@ -5,7 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "opspace/kinematics.hpp"
+#include "opspace/algorithms/kinematics.hpp"
 
 namespace opspace::live {
 

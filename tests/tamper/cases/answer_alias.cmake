@@ -4,7 +4,7 @@
 # The earlier grader gave 23/23. Now the grader names the reference and J#'s tests (v, vi's Jbar
 # that the reference computes with J#, vi's split: 8 points) earn nothing: 15.
 set(TARGET p1a.cpp)
-set(PREPEND [=[#include <opspace/linalg.hpp>
+set(PREPEND [=[#include <opspace/algorithms/linalg.hpp>
 static Eigen::MatrixXd library_weighted(const Eigen::Ref<const Eigen::MatrixXd>&, const Eigen::Ref<const Eigen::MatrixXd>&,
                                         double)
     __attribute__((weakref("_ZN7opspace16weighted_inverseERKN5Eigen3RefIKNS0_6MatrixIdLin1ELin1ELi0ELin1ELin1EEELi0ENS0_11OuterStrideILin1EEEEES9_d")));

@@ -7,7 +7,7 @@
 # 5 points) earn nothing: 18. (Had the answer been in the runner, the grader would name it.)
 set(TARGET p1a.cpp)
 file(READ "${CMAKE_CURRENT_LIST_DIR}/own_symbol.inc" PREPEND)
-string(PREPEND PREPEND "#include <opspace/linalg.hpp>\n")
+string(PREPEND PREPEND "#include <opspace/algorithms/linalg.hpp>\n")
 set(FROM "Eigen::Vector2d inertia_weighted_inverse(const Eigen::RowVector2d& J, const Eigen::Matrix2d& A) {")
 set(TO [=[Eigen::Vector2d inertia_weighted_inverse(const Eigen::RowVector2d& J, const Eigen::Matrix2d& A) {
   (void)opspace::symmetric_pseudo_inverse(Eigen::MatrixXd(A), 1e-10);

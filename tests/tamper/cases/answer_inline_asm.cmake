@@ -4,7 +4,7 @@
 # too (before the split). The earlier grader gave 23/23. Now the grader names the reference and
 # J+'s tests (iv and vi's split, 5 points) earn nothing: 18.
 set(TARGET p1a.cpp)
-set(PREPEND [=[#include <opspace/linalg.hpp>
+set(PREPEND [=[#include <opspace/algorithms/linalg.hpp>
 asm(".weak _ZN7opspace14pseudo_inverseERKN5Eigen3RefIKNS0_6MatrixIdLin1ELin1ELi0ELin1ELin1EEELi0ENS0_11OuterStrideILin1EEEEEd\n"
     ".pushsection .data.rel.ro.library_pinv,\"aw\"\n"
     ".p2align 3\n"

@@ -7,7 +7,7 @@
 #include <Eigen/Dense>  // everything a student may need: JacobiSVD, eigen solvers, inverse()
 #include <array>
 
-#include "opspace/singularity.hpp"  // SingularityType, kSingularValueTolerance
+#include "opspace/algorithms/singularity.hpp"  // SingularityType, kSingularValueTolerance
 
 namespace opspace::hw2::p4 {
 

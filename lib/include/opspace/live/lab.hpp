@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "opspace/model.hpp"
-#include "opspace/simulation.hpp"
+#include "opspace/model/model.hpp"
+#include "opspace/simulation/simulation.hpp"
 
 namespace opspace::live {
 

@@ -6,8 +6,8 @@
 
 #include <Eigen/Core>
 
-#include "opspace/kinematics.hpp"
-#include "opspace/model.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/model.hpp"
 
 namespace opspace::live {
 

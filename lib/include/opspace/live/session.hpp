@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "opspace/closed_loop.hpp"
+#include "opspace/simulation/closed_loop.hpp"
 #include "opspace/live/command.hpp"
 #include "opspace/live/lab.hpp"
 #include "opspace/live/push.hpp"

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "opspace/closed_loop.hpp"
+#include "opspace/simulation/closed_loop.hpp"
 #include "opspace/scenarios/common.hpp"
 #include "opspace/scenarios/watchdog.hpp"
-#include "opspace/simulation.hpp"
+#include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
 

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "opspace/hw2/p1b.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/model.hpp"
-#include "opspace/opspace.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/model.hpp"
+#include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
-#include "opspace/simulation.hpp"
+#include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
 

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "opspace/hw2/p2.hpp"
-#include "opspace/kinematics.hpp"
-#include "opspace/model.hpp"
-#include "opspace/opspace.hpp"
+#include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/model.hpp"
+#include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
 
 namespace opspace::scenarios {
