@@ -1,0 +1,301 @@
+// Runs a problem program's live lab (`PROGRAM ARG... --live --port 0`, docs/live.md), opens the
+// page it serves in Debian's headless Chromium (driven by playwright-core) and uses it as a
+// person would:
+//   node check_live.mjs PROGRAM SCREENSHOT.png [ARG...]
+// Checks: the page connects; 20 frames or more a second arrive and simulated time advances;
+// the arm's pixels change; reset brings t back near 0 and the start pose (and the gains back);
+// a mouse drag on body 2 (the PUMA's forearm, at the elbow) pulls it with a force shown in
+// newtons and moves it away from where the same run goes unpushed; pause holds t and the pose;
+// the law switch reaches the frames and the plots keep drawing; a refused command is shown; no
+// console errors; SIGINT ends the program with status 0 within 3 s, its port closed, and the
+// page says that it has stopped. The screenshot is taken during the drag.
+// Exit 0: all passed; 1: a check failed; 77: Chromium or playwright-core is missing (ctest
+// SKIP; under CI=1 that fails instead), or the program was built without the live page.
+import { spawn } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import net from 'node:net';
+import os from 'node:os';
+import path from 'node:path';
+
+const [program, screenshot, ...programArgs] = process.argv.slice(2);
+if (!program || !screenshot) {
+  console.error('usage: node check_live.mjs PROGRAM SCREENSHOT.png [ARG...]');
+  process.exit(2);
+}
+function skip(why) {
+  if (process.env.CI) {
+    console.log(`FAIL ${why} (CI is set: scripts/setup.sh should have installed it)`);
+    process.exit(1);
+  }
+  console.log(`SKIP: ${why}`);
+  process.exit(77);
+}
+if (!existsSync(process.env.CHROMIUM || '/usr/bin/chromium')) skip('Chromium is not installed (apt-get install chromium)');
+let helpers;
+try {
+  helpers = await import('./chromium.mjs');
+} catch (e) {
+  skip(`playwright-core is not installed here (the build's npm ci failed?): ${e.message}`);
+}
+const { check, failures } = helpers.checker();
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+const BODY = 2;  // hw2-p1's PUMA: body 2 is the forearm, its origin the elbow
+
+// The program, in a folder of its own: its default outputs go there, not to the repository.
+const work = mkdtempSync(path.join(os.tmpdir(), 'opspace-check-live-'));
+const args = [...programArgs, '--live', '--port', '0'];
+mkdirSync(path.dirname(path.resolve(screenshot)), { recursive: true });
+const child = spawn(program, args, { cwd: work, env: { ...process.env, OPSPACE_OUT: path.join(work, 'out') }, stdio: ['ignore', 'pipe', 'pipe'] });
+let output = '';
+let exited = null;  // { code, signal } once it has exited
+const exit = new Promise((resolve) => child.on('exit', (code, signal) => { exited = { code, signal }; resolve(exited); }));
+child.stdout.on('data', (d) => { output += d; });
+child.stderr.on('data', (d) => { output += d; });
+const printOutput = () => console.log(`--- ${path.basename(program)} ${args.join(' ')} said:\n${output.trimEnd()}\n---`);
+
+async function liveUrl() {
+  const deadline = Date.now() + 60000;
+  while (Date.now() < deadline) {
+    const m = output.match(/^live: (http:\/\/127\.0\.0\.1:(\d+)\/)\s*$/m);
+    if (m) return { url: m[1], port: Number(m[2]) };
+    if (exited) break;
+    await sleep(50);
+  }
+  return null;
+}
+const portClosed = (port) => new Promise((resolve) => {
+  const socket = net.connect({ host: '127.0.0.1', port });
+  socket.on('connect', () => { socket.destroy(); resolve(false); });
+  socket.on('error', () => resolve(true));
+});
+
+let browser = null;
+try {
+  const live = await liveUrl();
+  if (!live) {
+    if (exited && /^note:.*live/im.test(output)) {
+      printOutput();
+      skip('the program was built without the live page (see its note above)');
+    }
+    check(false, `the program printed 'live: http://127.0.0.1:PORT/' (it ${exited ? `exited with ${exited.code ?? exited.signal}` : 'did not, in 60 s'})`);
+    throw new Error('no live URL');
+  }
+  console.log(`live page: ${live.url}`);
+  browser = await helpers.launch();
+  const { page, errors } = await helpers.openPage(browser, { width: 1280, height: 800 });
+  await page.goto(live.url);
+  const ready = await page.waitForFunction(() => window.opspaceLive && window.opspaceLive.ready, null, { timeout: 30000 })
+    .then(() => true, () => false);
+  check(ready, 'the page connects to the event stream and draws its first frame');
+  if (!ready) throw new Error('not ready');
+  const data = await page.evaluate(() => window.opspaceLive.data);
+  const frame = () => page.evaluate(() => window.opspaceLive.lastFrame);
+  const state = () => page.evaluate(() => { const a = window.opspaceLive; return { frames: a.frames, t: a.lastFrame.t, fps: a.fps }; });
+  /// Waits for a frame that satisfies `test` (a function of the frame, run in the page).
+  const frameWhere = (test, timeout = 5000) => page.waitForFunction(
+    (source) => { const f = window.opspaceLive.lastFrame; return f && new Function('f', `return (${source})(f)`)(f) ? f : null; },
+    test.toString(), { timeout, polling: 'raf' }).then((h) => h.jsonValue(), () => null);
+  /// Sends nothing itself: waits for the frames to apply the page's last command.
+  const applied = () => frameWhere(new Function('f', 'return f.command >= window.opspaceLive.lastSent'));
+
+  // Frames: rate and simulated time.
+  const a = await state();
+  await sleep(2000);
+  const b = await state();
+  const rate = (b.frames - a.frames) / 2;
+  check(rate >= 20, `${rate.toFixed(1)} frames a second arrive over 2 s (>= 20; the page measures ${b.fps})`);
+  check(b.t - a.t > 0.3, `simulated time advances: ${a.t.toFixed(3)} s -> ${b.t.toFixed(3)} s in 2 s of wall clock (> 0.3 s)`);
+  const f0 = await frame();
+  check(f0.error === '', `the run has no error${f0.error ? `: ${f0.error}` : ''}`);
+  check(Array.isArray(f0.poses) && f0.poses.length === 7 * data.bodies, `frames carry 7 x ${data.bodies} pose numbers (${f0.poses && f0.poses.length})`);
+
+  // The arm's pixels change (WebGL only: the panels are HTML).
+  const grab = () => page.evaluate(() => {
+    const canvas = document.querySelector('#stage canvas');
+    const c = document.createElement('canvas');
+    c.width = canvas.width;
+    c.height = canvas.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(canvas, 0, 0);
+    return Array.from(ctx.getImageData(0, 0, c.width, c.height).data);
+  });
+  // Three pictures 0.75 s apart: the arm is seen moving between two of them (a swinging arm
+  // can pass through the same pose twice).
+  const pictures = [await grab()];
+  for (let k = 0; k < 2; ++k) {
+    await sleep(750);
+    pictures.push(await grab());
+  }
+  let changed = 0;
+  for (const [a, b] of [[0, 1], [1, 2], [0, 2]]) {
+    const before = pictures[a], after = pictures[b];
+    let n = 0;
+    for (let i = 0; i < before.length; i += 4) {
+      if (Math.abs(before[i] - after[i]) + Math.abs(before[i + 1] - after[i + 1]) + Math.abs(before[i + 2] - after[i + 2]) > 24) ++n;
+    }
+    changed = Math.max(changed, n);
+  }
+  const before = pictures[0];
+  const share = changed / (before.length / 4);
+  check(share > 0.001, `${(100 * share).toFixed(2)} % of the view's pixels change between two of three pictures 0.75 s apart as the arm moves (> 0.1 %)`);
+
+  // A gain moved, then reset: t back near 0, the start pose, the gains back to their values.
+  if (data.gains.length) {
+    const g = data.gains[0];
+    const value = g.min + 0.75 * (g.max - g.min) === g.value ? g.min + 0.25 * (g.max - g.min) : g.min + 0.75 * (g.max - g.min);
+    await page.evaluate(([name, v]) => {
+      const input = document.getElementById(`gain-${name}`);
+      input.value = String(v);
+      input.dispatchEvent(new Event('input'));
+    }, [g.name, value]);
+    const f = await applied();
+    check(f && Math.abs(f.gains[g.name] - value) <= 1e-6 * Math.max(1, Math.abs(value)),
+      `the ${g.name} slider sets the gain (${f && f.gains[g.name]}, sent ${value})`);
+  } else {
+    console.log('note: the program shows no gains: the gain sliders are not checked');
+  }
+  const resetRun = async () => {
+    await page.evaluate(() => { window.opspaceLive.trace = []; });
+    await page.locator('#reset').click();
+    if (!(await applied())) return null;
+    // The first frame that applied it (the page may have drawn later ones by now).
+    return page.evaluate(() => window.opspaceLive.trace.find((f) => f.command >= window.opspaceLive.lastSent));
+  };
+  const r1 = await resetRun();
+  check(r1 && r1.t < 0.3, `reset: the first frame after it is at t = ${r1 && r1.t.toFixed(3)} s (< 0.3 s)`);
+  if (data.gains.length) {
+    const g = data.gains[0];
+    const slider = await page.locator(`#gain-${g.name}`).inputValue();
+    check(r1 && r1.gains[g.name] === g.value && Math.abs(Number(slider) - g.value) <= (g.max - g.min) / 400,
+      `reset: ${g.name} back to ${g.value} in the frames (${r1 && r1.gains[g.name]}) and on its slider (${slider})`);
+  }
+  const moved = (p, q, i) => Math.hypot(p[7 * i] - q[7 * i], p[7 * i + 1] - q[7 * i + 1], p[7 * i + 2] - q[7 * i + 2]);
+  const elapsed = (since) => `${((Date.now() - since) / 1000).toFixed(1)} s`;
+
+  // The drag, in the run that began at the reset: press on body 2 near its origin (the elbow)
+  // and pull up and right by 150 px.
+  await frameWhere((f) => f.t > 0.3);
+  const pressed = Date.now();
+  const spot = await page.evaluate((body) => {
+    const api = window.opspaceLive, o = api.screenOf(body);
+    for (let r = 0; r <= 60; r += 4) {
+      const around = Math.max(1, Math.round((2 * Math.PI * r) / 8));
+      for (let k = 0; k < around; ++k) {
+        const x = o.x + r * Math.cos((2 * Math.PI * k) / around), y = o.y + r * Math.sin((2 * Math.PI * k) / around);
+        // A pixel well inside the body's picture: the arm moves on before the press.
+        if ([[0, 0], [-5, 0], [5, 0], [0, -5], [0, 5]].every(([dx, dy]) => api.bodyAt(x + dx, y + dy) === body)) return { x, y, origin: o };
+      }
+    }
+    return null;
+  }, BODY);
+  check(spot !== null, `body ${BODY} is drawn near its origin's pixel${spot ? ` (pressed at ${spot.x.toFixed(0)}, ${spot.y.toFixed(0)})` : ''}`);
+  let pulled = null;
+  if (spot) {
+    await page.mouse.move(spot.x, spot.y);
+    await page.mouse.down();
+    const picked = await frameWhere((f) => f.push);
+    check(picked !== null && picked.push.body === BODY, `pressing on body ${BODY} starts a push on it (${picked ? `body ${picked.push.body}` : 'no push'}, ${elapsed(pressed)} after the search began)`);
+    await page.mouse.move(spot.x + 60, spot.y - 135, { steps: 10 });
+    await sleep(1000);
+    pulled = await frame();
+    const force = pulled.push ? Math.hypot(...pulled.push.force) : 0;
+    const label = page.locator('#push-label');
+    const labelText = (await label.isVisible()) ? await label.textContent() : '(hidden)';
+    check(force > 1 && /^\d+\.\d N$/.test(labelText), `the spring pulls with ${force.toFixed(1)} N, labelled '${labelText}'`);
+    check(pulled.push && pulled.push.body === BODY && pulled.push.target.every(Number.isFinite), 'the frames show the pulled point and the mouse point');
+    await page.screenshot({ path: screenshot });
+    console.log(`screenshot: ${screenshot}`);
+    await page.mouse.up();
+    const released = await frameWhere((f) => f.push === null && f.command >= window.opspaceLive.lastSent);
+    check(released !== null && !(await label.isVisible()), 'releasing the mouse ends the push and hides the label');
+  }
+  const pushedRun = await page.evaluate(() => window.opspaceLive.trace.map((f) => [f.t, f.poses]));
+  /// The frame of a run (a trace) nearest to simulated time t.
+  const at = (trace, t) => trace.reduce((best, r) => (Math.abs(r[0] - t) < Math.abs(best[0] - t) ? r : best));
+
+  // Reset again: the run starts over from the same pose, and goes as it went before the push
+  // (the simulation is deterministic from a reset: the same steps, the same gains). The first
+  // frame after a reset comes a little after t = 0: it is compared with the first run's frame
+  // at the same time, before the push.
+  const r2 = await resetRun();
+  let worst = Infinity, then = null;
+  if (r2) {
+    then = at(pushedRun, r2.t);
+    worst = 0;
+    for (let i = 0; i < data.bodies; ++i) worst = Math.max(worst, moved(r2.poses, then[1], i));
+  }
+  check(r2 && r2.t < 0.3 && Math.abs(then[0] - r2.t) < 0.05 && worst < 0.005,
+    `reset again: t = ${r2 && r2.t.toFixed(3)} s, every body origin within ${(1000 * worst).toFixed(1)} mm of the first run's at that time (< 5 mm)`);
+  if (pulled) {
+    // This run, unpushed, at the time of the pull: body 2 is elsewhere.
+    const until = pulled.t + 0.1;
+    await frameWhere(new Function('f', `return f.t > ${until}`), 1000 * until + 20000);
+    const unpushed = at(await page.evaluate(() => window.opspaceLive.trace.map((f) => [f.t, f.poses])), pulled.t);
+    const shift = moved(pulled.poses, unpushed[1], BODY);
+    check(Math.abs(unpushed[0] - pulled.t) < 0.05 && shift > 0.02,
+      `the push moves body ${BODY}: its origin is ${(1000 * shift).toFixed(0)} mm from where the same run unpushed has it at t = ${pulled.t.toFixed(2)} s (> 20 mm)`);
+  }
+
+  // Pause holds the pose; resume goes on.
+  await page.locator('#pause').click();
+  const paused = await frameWhere((f) => f.paused && f.command >= window.opspaceLive.lastSent);
+  await sleep(600);
+  const held = await frame();
+  check(paused && held.paused && held.t === paused.t && held.poses.every((v, i) => v === paused.poses[i]),
+    `pause holds t (${paused && paused.t.toFixed(3)} -> ${held.t.toFixed(3)} s) and every pose`);
+  check((await page.locator('#pause').textContent()) === 'Resume', 'the pause button then says Resume');
+  await page.locator('#pause').click();
+  const resumed = await frameWhere(new Function('f', `return !f.paused && f.t > ${held.t} + 0.05`));
+  check(resumed !== null, 'resume: simulated time goes on');
+
+  // The law switch.
+  if (data.laws.length > 1) {
+    const from = (await frame()).law, to = from === 0 ? 1 : 0;
+    await page.locator('#law').selectOption(String(to));
+    const switched = await frameWhere(new Function('f', `return f.law === ${to}`));
+    const s0 = await page.evaluate(() => ({ draws: window.opspaceLive.plotDraws, samples: window.opspaceLive.samples, t: window.opspaceLive.lastFrame.t }));
+    await sleep(1000);
+    const s1 = await page.evaluate(() => ({ draws: window.opspaceLive.plotDraws, samples: window.opspaceLive.samples, t: window.opspaceLive.lastFrame.t, error: window.opspaceLive.lastFrame.error }));
+    check(switched !== null, `the law select switches the frames' law from ${from} to ${to} (${data.laws[to]})`);
+    check(s1.t > s0.t && s1.samples > s0.samples && s1.draws > s0.draws,
+      `after the switch the run goes on and the plots keep drawing (${s1.samples - s0.samples} samples, ${s1.draws - s0.draws} redraws in 1 s)`);
+    check(s1.error === '', `no error under ${data.laws[to]}${s1.error ? `: ${s1.error}` : ''}`);
+  } else {
+    console.log('note: one control law: no law switch to check');
+  }
+  const latencies = await page.evaluate(() => window.opspaceLive.latencies);
+  const sorted = [...latencies].sort((x, y) => x - y);
+  check(latencies.length > 0, `every command is acknowledged by a frame: ${latencies.length} latencies, median ${sorted.length ? sorted[sorted.length >> 1].toFixed(0) : '-'} ms, ` +
+    `max ${sorted.length ? sorted[sorted.length - 1].toFixed(0) : '-'} ms`);
+  check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
+
+  // A command the server refuses (400) is shown on the page (Chromium logs the 400: not an error here).
+  await page.evaluate(() => window.opspaceLive.send({ command: 'no-such-command' }));
+  const refused = await page.waitForFunction(() => /refused/.test(document.getElementById('status').textContent), null, { timeout: 5000 })
+    .then(() => page.locator('#status').textContent(), () => null);
+  check(refused !== null, `a refused command is shown: '${refused}'`);
+
+  // SIGINT: the program ends cleanly, its port closed, and the page says so.
+  const sent = Date.now();
+  child.kill('SIGINT');
+  const ended = await Promise.race([exit, sleep(3000).then(() => null)]);
+  check(ended !== null && ended.code === 0, `SIGINT: the program exits with status 0 within 3 s (${ended ? `${ended.code ?? ended.signal} after ${Date.now() - sent} ms` : 'still running'})`);
+  check(await portClosed(live.port), `nothing listens on port ${live.port} any more`);
+  const told = await page.waitForFunction(() => window.opspaceLive.stopped && document.getElementById('stopped').offsetParent !== null, null, { timeout: 5000 })
+    .then(() => true, () => false);
+  check(told, 'the page says that the program has stopped');
+} catch (e) {
+  check(false, `the check ran to its end (${e.message.split('\n')[0]})`);
+} finally {
+  if (browser) await browser.close();
+  if (!exited) {
+    child.kill('SIGKILL');
+    await exit;
+  }
+  if (failures.length) printOutput();
+  rmSync(work, { recursive: true, force: true });
+}
+if (failures.length) {
+  console.log(`${failures.length} check(s) failed`);
+  process.exit(1);
+}
