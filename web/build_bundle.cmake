@@ -2,7 +2,7 @@
 # `npm ci` there (pinned by package-lock.json) and bundles with esbuild. A failure is a
 # warning, not a build error: the stamp records it so that it is not retried on every build
 # (delete the stamp, or the build's web/ folder, to retry).
-file(REMOVE ${BUNDLE} ${EXPLORER_VIEWER})
+file(REMOVE ${BUNDLE} ${EXPLORER_VIEWER} ${LIVE_VIEWER})
 file(COPY ${SOURCE_DIR}/package.json ${SOURCE_DIR}/package-lock.json ${SOURCE_DIR}/build.mjs
      ${SOURCE_DIR}/src ${SOURCE_DIR}/test DESTINATION ${BINARY_DIR})
 
@@ -23,7 +23,7 @@ if(NOT npm_status EQUAL 0)
           "Does a package need a newer node (EBADENGINE above)?")
   return()
 endif()
-execute_process(COMMAND ${NODE} build.mjs ${BUNDLE} ${EXPLORER_VIEWER} WORKING_DIRECTORY ${BINARY_DIR} RESULT_VARIABLE esbuild_status)
+execute_process(COMMAND ${NODE} build.mjs ${BUNDLE} ${EXPLORER_VIEWER} ${LIVE_VIEWER} WORKING_DIRECTORY ${BINARY_DIR} RESULT_VARIABLE esbuild_status)
 if(NOT esbuild_status EQUAL 0 OR NOT EXISTS ${BUNDLE})
   give_up("esbuild failed (status ${esbuild_status})")
   return()
