@@ -370,6 +370,7 @@ function main() {
   // Pushing: pointerdown on the arm picks a body and a point of it. This listener is added
   // before OrbitControls' own, so that it can turn them off before they start turning the view.
   const raycaster = new THREE.Raycaster();
+  let shown = null;  // the frame drawn
   let drag = null;  // { body, local: the point in the body's frame, plane, pointerId }
   function ray(event) {
     const r = canvas.getBoundingClientRect();
@@ -393,10 +394,11 @@ function main() {
     commands.send({ command: 'push', body: drag.body, point: drag.local, target: drag.target.toArray() }, { key: 'push' });
   }
   canvas.addEventListener('pointerdown', (event) => {
-    if (event.button !== 0 || drag || !api.lastFrame || api.stopped) return;
+    if (event.button !== 0 || drag || !shown || api.stopped) return;
     const hit = pick(event);
     if (!hit || hit.body < 0) return;
-    const p = api.lastFrame.poses, o = 7 * hit.body;
+    // The body's pose as drawn, which the hit point is on (the last frame received may be newer).
+    const p = shown.poses, o = 7 * hit.body;
     const turn = new THREE.Quaternion(p[o + 3], p[o + 4], p[o + 5], p[o + 6]).invert();
     const local = hit.point.clone().sub(new THREE.Vector3(p[o], p[o + 1], p[o + 2])).applyQuaternion(turn);
     const normal = camera.getWorldDirection(new THREE.Vector3());
@@ -412,7 +414,7 @@ function main() {
   });
   canvas.addEventListener('pointermove', (event) => {
     if (!drag) {
-      if (event.buttons === 0 && api.lastFrame) {
+      if (event.buttons === 0 && shown) {
         const hit = pick(event);
         canvas.style.cursor = hit && hit.body >= 0 ? 'grab' : '';
       }
@@ -507,7 +509,7 @@ function main() {
       const nearest = SPEEDS.reduce((a, b) => (Math.abs(b - frame.speed) < Math.abs(a - frame.speed) ? b : a));
       speed.value = String(nearest);
     }
-    if (law && settled(lawState, frame) && document.activeElement !== law) law.value = String(frame.law);
+    if (law && settled(lawState, frame)) law.value = String(frame.law);
     for (const [name, s] of Object.entries(sliders)) {
       const v = frame.gains && frame.gains[name];
       if (!Number.isFinite(v) || s.held || !settled(s, frame)) continue;
@@ -574,7 +576,8 @@ function main() {
   function tick(now) {
     if (fresh && api.lastFrame) {
       fresh = false;
-      show(api.lastFrame);
+      shown = api.lastFrame;
+      show(shown);
       if (!framed) {
         framed = true;
         frameView();
@@ -590,6 +593,8 @@ function main() {
       lastPlotDraw = now;
       plots.draw(api.lastFrame ? api.lastFrame.t : 0);
     }
+    while (arrivals.length && arrivals[0] < now - 1000) arrivals.shift();
+    api.fps = arrivals.length;
     controls.update();
     render();
     if (!api.stopped) placePushLabel();
@@ -599,9 +604,9 @@ function main() {
   plots.draw(0);
   requestAnimationFrame(tick);
 
-  /// The pixel (CSS, page coordinates) where body i's origin is drawn, from the last frame.
+  /// The pixel (CSS, page coordinates) where body i's origin is drawn.
   api.screenOf = (i) => {
-    const p = api.lastFrame.poses;
+    const p = shown.poses;
     const at = new THREE.Vector3(p[7 * i], p[7 * i + 1], p[7 * i + 2]).project(camera);
     const r = canvas.getBoundingClientRect();
     return { x: r.left + ((at.x + 1) / 2) * r.width, y: r.top + ((1 - at.y) / 2) * r.height };

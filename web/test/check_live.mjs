@@ -110,33 +110,35 @@ try {
   check(Array.isArray(f0.poses) && f0.poses.length === 7 * data.bodies, `frames carry 7 x ${data.bodies} pose numbers (${f0.poses && f0.poses.length})`);
 
   // The arm's pixels change (WebGL only: the panels are HTML).
-  const grab = () => page.evaluate(() => {
+  // Three pictures 0.75 s apart, compared in the page: the arm is seen moving between two of
+  // them (a swinging arm can pass through the same pose twice).
+  const { changed, pixels } = await page.evaluate(async () => {
     const canvas = document.querySelector('#stage canvas');
-    const c = document.createElement('canvas');
-    c.width = canvas.width;
-    c.height = canvas.height;
-    const ctx = c.getContext('2d');
-    ctx.drawImage(canvas, 0, 0);
-    return Array.from(ctx.getImageData(0, 0, c.width, c.height).data);
-  });
-  // Three pictures 0.75 s apart: the arm is seen moving between two of them (a swinging arm
-  // can pass through the same pose twice).
-  const pictures = [await grab()];
-  for (let k = 0; k < 2; ++k) {
-    await sleep(750);
-    pictures.push(await grab());
-  }
-  let changed = 0;
-  for (const [a, b] of [[0, 1], [1, 2], [0, 2]]) {
-    const before = pictures[a], after = pictures[b];
-    let n = 0;
-    for (let i = 0; i < before.length; i += 4) {
-      if (Math.abs(before[i] - after[i]) + Math.abs(before[i + 1] - after[i + 1]) + Math.abs(before[i + 2] - after[i + 2]) > 24) ++n;
+    const grab = () => {
+      const c = document.createElement('canvas');
+      c.width = canvas.width;
+      c.height = canvas.height;
+      const ctx = c.getContext('2d');
+      ctx.drawImage(canvas, 0, 0);
+      return ctx.getImageData(0, 0, c.width, c.height).data;
+    };
+    const pictures = [grab()];
+    for (let k = 0; k < 2; ++k) {
+      await new Promise((resolve) => setTimeout(resolve, 750));
+      pictures.push(grab());
     }
-    changed = Math.max(changed, n);
-  }
-  const before = pictures[0];
-  const share = changed / (before.length / 4);
+    let most = 0;
+    for (const [a, b] of [[0, 1], [1, 2], [0, 2]]) {
+      const p = pictures[a], q = pictures[b];
+      let n = 0;
+      for (let i = 0; i < p.length; i += 4) {
+        if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 24) ++n;
+      }
+      most = Math.max(most, n);
+    }
+    return { changed: most, pixels: pictures[0].length / 4 };
+  });
+  const share = changed / pixels;
   check(share > 0.001, `${(100 * share).toFixed(2)} % of the view's pixels change between two of three pictures 0.75 s apart as the arm moves (> 0.1 %)`);
 
   // A gain moved, then reset: t back near 0, the start pose, the gains back to their values.
@@ -159,7 +161,11 @@ try {
     await page.locator('#reset').click();
     if (!(await applied())) return null;
     // The first frame that applied it (the page may have drawn later ones by now).
-    return page.evaluate(() => window.opspaceLive.trace.find((f) => f.command >= window.opspaceLive.lastSent));
+    return page.evaluate(() => {
+      const api = window.opspaceLive;
+      api.resetId = api.lastSent;
+      return api.trace.find((f) => f.command >= api.resetId);
+    });
   };
   const r1 = await resetRun();
   check(r1 && r1.t < 0.3, `reset: the first frame after it is at t = ${r1 && r1.t.toFixed(3)} s (< 0.3 s)`);
@@ -209,28 +215,34 @@ try {
     const released = await frameWhere((f) => f.push === null && f.command >= window.opspaceLive.lastSent);
     check(released !== null && !(await label.isVisible()), 'releasing the mouse ends the push and hides the label');
   }
-  const pushedRun = await page.evaluate(() => window.opspaceLive.trace.map((f) => [f.t, f.poses]));
-  /// The frame of a run (a trace) nearest to simulated time t.
-  const at = (trace, t) => trace.reduce((best, r) => (Math.abs(r[0] - t) < Math.abs(best[0] - t) ? r : best));
+  /// The frames of the run since the last reset, [t, poses] each.
+  const thisRun = () => page.evaluate(() => {
+    const api = window.opspaceLive, from = api.resetId;
+    return api.trace.filter((f) => f.command >= from).map((f) => [f.t, f.poses]);
+  });
+  /// The frame of a run nearest to simulated time t.
+  const at = (run, t) => run.reduce((best, r) => (Math.abs(r[0] - t) < Math.abs(best[0] - t) ? r : best));
 
   // Reset again: the run starts over from the same pose, and goes as it went before the push
   // (the simulation is deterministic from a reset: the same steps, the same gains). The first
-  // frame after a reset comes a little after t = 0: it is compared with the first run's frame
-  // at the same time, before the push.
+  // run's first frame, a little after t = 0, is compared with this run's at the same time.
   const r2 = await resetRun();
-  let worst = Infinity, then = null;
-  if (r2) {
-    then = at(pushedRun, r2.t);
-    worst = 0;
-    for (let i = 0; i < data.bodies; ++i) worst = Math.max(worst, moved(r2.poses, then[1], i));
-  }
-  check(r2 && r2.t < 0.3 && Math.abs(then[0] - r2.t) < 0.05 && worst < 0.005,
-    `reset again: t = ${r2 && r2.t.toFixed(3)} s, every body origin within ${(1000 * worst).toFixed(1)} mm of the first run's at that time (< 5 mm)`);
+  check(r2 && r2.t < 0.3, `reset again: the first frame after it is at t = ${r2 && r2.t.toFixed(3)} s (< 0.3 s)`);
   if (pulled) {
-    // This run, unpushed, at the time of the pull: body 2 is elsewhere.
-    const until = pulled.t + 0.1;
+    // This run, unpushed, up to the time of the pull: body 2 is elsewhere then.
+    const until = Math.max(pulled.t, r1 ? r1.t : 0) + 0.1;
     await frameWhere(new Function('f', `return f.t > ${until}`), 1000 * until + 20000);
-    const unpushed = at(await page.evaluate(() => window.opspaceLive.trace.map((f) => [f.t, f.poses])), pulled.t);
+  }
+  const second = await thisRun();
+  if (r1 && second.length) {
+    const then = at(second, r1.t);
+    let worst = 0;
+    for (let i = 0; i < data.bodies; ++i) worst = Math.max(worst, moved(r1.poses, then[1], i));
+    check(Math.abs(then[0] - r1.t) < 0.025 && worst < 0.005,
+      `reset brings back the start pose: at t = ${r1.t.toFixed(3)} s every body origin is within ${(1000 * worst).toFixed(1)} mm of where it was after the first reset (< 5 mm)`);
+  }
+  if (pulled && second.length) {
+    const unpushed = at(second, pulled.t);
     const shift = moved(pulled.poses, unpushed[1], BODY);
     check(Math.abs(unpushed[0] - pulled.t) < 0.05 && shift > 0.02,
       `the push moves body ${BODY}: its origin is ${(1000 * shift).toFixed(0)} mm from where the same run unpushed has it at t = ${pulled.t.toFixed(2)} s (> 20 mm)`);
