@@ -32,7 +32,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px system-ui, sa
 .swatch { display: inline-block; width: 10px; height: 10px; margin-right: 6px; border-radius: 2px; }
 #error { display: none; margin-top: 6px; padding: 6px 8px; border-radius: 4px; background: #c0392b; color: #fff; font-weight: 600; }
 #error button { margin-left: 8px; }
-#stopped { display: none; position: absolute; left: 50%; top: 12px; transform: translateX(-50%); padding: 8px 14px; border-radius: 6px; background: #1d2330; color: #fff; font-weight: 600; }
+#stopped { display: none; position: absolute; left: calc((100% - ${SIDE}px) / 2); bottom: 16px; transform: translateX(-50%); padding: 8px 14px; border-radius: 6px; background: #1d2330; color: #fff; font-weight: 600; }
 #push-label { display: none; position: absolute; pointer-events: none; padding: 1px 6px; border-radius: 4px; background: rgba(255,255,255,0.9); border: 1px solid #d35400; color: #a04000; font: 600 13px ui-monospace, monospace; transform: translate(8px, -50%); }
 #side { position: absolute; right: 0; top: 0; bottom: 0; width: ${SIDE}px; overflow-y: auto; padding: 8px 10px; box-sizing: border-box; background: #fff; border-left: 1px solid #d6d8de; }
 #side h2 { font-size: 13px; margin: 10px 0 4px 0; }

@@ -40,6 +40,10 @@ try {
 const { check, failures } = helpers.checker();
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 const BODY = 2;  // hw2-p1's PUMA: body 2 is the forearm, its origin the elbow
+// The push starts after this simulated time: until then the run after the first reset is
+// unpushed, to compare with the run after the second (frames after a reset can be late on a
+// busy machine: the first one is allowed up to 1 s).
+const PUSH_FROM = 1;
 
 // The program, in a folder of its own: its default outputs go there, not to the repository.
 const work = mkdtempSync(path.join(os.tmpdir(), 'opspace-check-live-'));
@@ -167,8 +171,9 @@ try {
       return api.trace.find((f) => f.command >= api.resetId);
     });
   };
+  const before = await frame();
   const r1 = await resetRun();
-  check(r1 && r1.t < 0.3, `reset: the first frame after it is at t = ${r1 && r1.t.toFixed(3)} s (< 0.3 s)`);
+  check(r1 && r1.t < 1, `reset: the first frame after it is at t = ${r1 && r1.t.toFixed(3)} s (< 1 s, from ${before.t.toFixed(1)} s)`);
   if (data.gains.length) {
     const g = data.gains[0];
     const slider = await page.locator(`#gain-${g.name}`).inputValue();
@@ -180,7 +185,7 @@ try {
 
   // The drag, in the run that began at the reset: press on body 2 near its origin (the elbow)
   // and pull up and right by 150 px.
-  await frameWhere((f) => f.t > 0.3);
+  await frameWhere(new Function('f', `return f.t > ${PUSH_FROM}`), 20000);
   const pressed = Date.now();
   const spot = await page.evaluate((body) => {
     const api = window.opspaceLive, o = api.screenOf(body);
@@ -220,31 +225,49 @@ try {
     const api = window.opspaceLive, from = api.resetId;
     return api.trace.filter((f) => f.command >= from).map((f) => [f.t, f.poses]);
   });
-  /// The frame of a run nearest to simulated time t.
-  const at = (run, t) => run.reduce((best, r) => (Math.abs(r[0] - t) < Math.abs(best[0] - t) ? r : best));
+  /// A run's poses at simulated time t, interpolated between the frames around it (positions
+  /// only are used), or null when the run has no frames on both sides of t.
+  const at = (run, t) => {
+    for (let k = 0; k + 1 < run.length; ++k) {
+      const [t0, p0] = run[k], [t1, p1] = run[k + 1];
+      if (t0 <= t && t <= t1) {
+        const w = t1 > t0 ? (t - t0) / (t1 - t0) : 0;
+        return p0.map((v, i) => v + w * (p1[i] - v));
+      }
+    }
+    return null;
+  };
 
   // Reset again: the run starts over from the same pose, and goes as it went before the push
   // (the simulation is deterministic from a reset: the same steps, the same gains). The first
   // run's first frame, a little after t = 0, is compared with this run's at the same time.
+  const first = await thisRun();
   const r2 = await resetRun();
-  check(r2 && r2.t < 0.3, `reset again: the first frame after it is at t = ${r2 && r2.t.toFixed(3)} s (< 0.3 s)`);
+  check(r2 && r2.t < 1, `reset again: the first frame after it is at t = ${r2 && r2.t.toFixed(3)} s (< 1 s)`);
   if (pulled) {
     // This run, unpushed, up to the time of the pull: body 2 is elsewhere then.
     const until = Math.max(pulled.t, r1 ? r1.t : 0) + 0.1;
     await frameWhere(new Function('f', `return f.t > ${until}`), 1000 * until + 20000);
   }
   const second = await thisRun();
-  if (r1 && second.length) {
-    const then = at(second, r1.t);
-    let worst = 0;
-    for (let i = 0; i < data.bodies; ++i) worst = Math.max(worst, moved(r1.poses, then[1], i));
-    check(Math.abs(then[0] - r1.t) < 0.025 && worst < 0.005,
-      `reset brings back the start pose: at t = ${r1.t.toFixed(3)} s every body origin is within ${(1000 * worst).toFixed(1)} mm of where it was after the first reset (< 5 mm)`);
+  if (first.length && second.length) {
+    // Both runs' poses at the later of their first frames' times, before the push began.
+    const tc = Math.max(first[0][0], second[0][0]);
+    const a = at(first, tc), b = at(second, tc);
+    let worst = Infinity;
+    if (a && b) {
+      worst = 0;
+      for (let i = 0; i < data.bodies; ++i) worst = Math.max(worst, moved(a, b, i));
+    }
+    check(tc < PUSH_FROM && worst < 0.005,
+      `reset brings back the start pose: at t = ${tc.toFixed(3)} s every body origin is within ${(1000 * worst).toFixed(1)} mm of where it was after the first reset (< 5 mm)`);
+  } else {
+    check(false, 'reset brings back the start pose (no frames after a reset)');
   }
   if (pulled && second.length) {
     const unpushed = at(second, pulled.t);
-    const shift = moved(pulled.poses, unpushed[1], BODY);
-    check(Math.abs(unpushed[0] - pulled.t) < 0.05 && shift > 0.02,
+    const shift = unpushed ? moved(pulled.poses, unpushed, BODY) : 0;
+    check(shift > 0.02,
       `the push moves body ${BODY}: its origin is ${(1000 * shift).toFixed(0)} mm from where the same run unpushed has it at t = ${pulled.t.toFixed(2)} s (> 20 mm)`);
   }
 
