@@ -22,7 +22,9 @@ if (!program || !screenshot) {
   console.error('usage: node check_live.mjs PROGRAM SCREENSHOT.png [ARG...]');
   process.exit(2);
 }
+let cleanUp = () => {};
 function skip(why) {
+  cleanUp();
   if (process.env.CI) {
     console.log(`FAIL ${why} (CI is set: scripts/setup.sh should have installed it)`);
     process.exit(1);
@@ -47,6 +49,7 @@ const PUSH_FROM = 1;
 
 // The program, in a folder of its own: its default outputs go there, not to the repository.
 const work = mkdtempSync(path.join(os.tmpdir(), 'opspace-check-live-'));
+cleanUp = () => rmSync(work, { recursive: true, force: true });
 const args = [...programArgs, '--live', '--port', '0'];
 mkdirSync(path.dirname(path.resolve(screenshot)), { recursive: true });
 const child = spawn(program, args, { cwd: work, env: { ...process.env, OPSPACE_OUT: path.join(work, 'out') }, stdio: ['ignore', 'pipe', 'pipe'] });
@@ -328,7 +331,7 @@ try {
     await exit;
   }
   if (failures.length) printOutput();
-  rmSync(work, { recursive: true, force: true });
+  cleanUp();
 }
 if (failures.length) {
   console.log(`${failures.length} check(s) failed`);
