@@ -281,7 +281,7 @@ function main() {
   if (gains.length) side.append(el('h2', {}, 'gains'));
   for (const g of gains) {
     const row = el('div', { class: 'row' });
-    const input = el('input', { id: `gain-${g.name}`, type: 'range', min: String(g.min), max: String(g.max), step: String((g.max - g.min) / 400), value: String(g.value) });
+    const input = el('input', { id: `gain-${g.name}`, type: 'range', min: String(g.min), max: String(g.max), step: 'any', value: String(g.value) });
     const shown = el('span', { class: 'num' }, trimmed(g.value));
     row.append(el('span', { title: g.name }, g.label || g.name), input, shown);
     side.append(row);
