@@ -178,6 +178,12 @@ bool watchdog_from_environment(const char* program, Options& options) {
   }
 }
 
+int no_live(const char* program) {
+  std::cerr << program << ": this build has no live lab (--live): install libcpp-httplib-dev (bash scripts/setup.sh "
+            << "does) and build again\n";
+  return 2;
+}
+
 int guarded(const char* program, const std::function<int()>& body) {
   try {
     return body();

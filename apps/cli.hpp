@@ -123,6 +123,9 @@ int finish(const Options& options, const std::string& prefix, const Result& resu
   return result.failure.empty() ? 0 : 1;
 }
 
+/// Prints on stderr that this build has no live lab and how to get it; returns 2.
+int no_live(const char* program);
+
 /// Returns body(); an exception instead prints "program: what" on stderr and returns 1.
 int guarded(const char* program, const std::function<int()>& body);
 

@@ -15,8 +15,7 @@
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
-#include <opspace/live/p1b_lab.hpp>
-#include <opspace/live/run.hpp>
+#include "live.hpp"
 #endif
 
 namespace {
@@ -122,21 +121,11 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
 #ifdef OPSPACE_LIVE
 /// `part` live in the browser until Ctrl-C; then the session's log, plots and replay page.
 int live(Part part, const cli::Options& options, const std::string& prefix) {
-  opspace::live::P1bLab lab(part, &opspace::hw2::p1b::control);
-  opspace::live::LiveOptions live;
-  live.port = options.port;
-  live.duration = options.duration_given ? options.run.duration : 0.0;
-  live.csv_path = prefix + "-live.csv";
   std::cout << "problem 1b live, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  const opspace::live::LiveReport report = opspace::live::serve(lab, live, std::cout);
-  std::cout << "\nlive run ended: " << report.steps << " steps (" << report.steps * 1e-3 << " simulated s) in "
-            << report.wall_seconds << " s, " << report.frames << " frames, " << report.resyncs
-            << " resynchronisations\nlog:    " << live.csv_path << " (the last run: since the last reset)\n";
-  const p1b::Result& result = lab.result();
-  const Part last = lab.part();
-  return cli::finish(
-      options, prefix + "-live", result, [&] { return p1b::figures(result, last); },
-      [&] { return p1b::replay_scene(result, last); });
+  opspace::live::P1bLab lab(part, &opspace::hw2::p1b::control);
+  return cli::serve_live(
+      lab, options, prefix, [&] { return p1b::figures(lab.result(), lab.part()); },
+      [&] { return p1b::replay_scene(lab.result(), lab.part()); });
 }
 #endif
 
@@ -157,8 +146,7 @@ int main(int argc, char** argv) {
 #ifdef OPSPACE_LIVE
     return cli::guarded(argv[0], [&] { return live(part, options, prefix); });
 #else
-    std::cerr << argv[0] << ": this build has no live lab: install libcpp-httplib-dev (bash scripts/setup.sh) and build again\n";
-    return 2;
+    return cli::no_live(argv[0]);
 #endif
   }
   std::cout << "problem 1b, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";

@@ -12,18 +12,24 @@
 #include "cli.hpp"
 #include "reference_runs.hpp"
 
+#ifdef OPSPACE_LIVE
+#include "live.hpp"
+#endif
+
 namespace {
 
 namespace p2 = opspace::scenarios::p2;
 
 int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
-      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay]\n"
+      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay] [--live [--port N]]\n"
       << "  link7 of the iiwa tracks x_d(t) and lambda_d(t) of problem 2\n"
       << "  --duration  simulated seconds (default " << p2::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
       << "  --csv       log file (default out/hw2-p2.csv in the repository); plots and the 3D replay page are\n"
       << "              written next to it, named after it (docs/visuals.md)\n"
-      << "  --no-plots, --no-replay  skip those pictures\n";
+      << "  --no-plots, --no-replay  skip those pictures\n"
+      << "  --live      run in real time in the browser, push the arm with the mouse (docs/live.md); until\n"
+      << "              Ctrl-C, or --duration simulated seconds. --port N: its port (default: a free one)\n";
   return code;
 }
 
@@ -84,6 +90,18 @@ int main(int argc, char** argv) {
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
   options.run.progress = &std::cerr;
   std::cout << "problem 2, iiwa position + Euler-parameter tracking (" << OPSPACE_GRADED_LIBRARY << ")\n";
+  if (options.live) {
+#ifdef OPSPACE_LIVE
+    return cli::guarded(argv[0], [&] {
+      opspace::live::P2Lab lab(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration);
+      return cli::serve_live(
+          lab, options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p2::figures(lab.result()); },
+          [&] { return p2::replay_scene(lab.result()); });
+    });
+#else
+    return cli::no_live(argv[0]);
+#endif
+  }
   return cli::guarded(argv[0], [&] {
     const p2::Result result =
         p2::run(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration, options.run);

@@ -13,18 +13,24 @@
 #include "cli.hpp"
 #include "reference_runs.hpp"
 
+#ifdef OPSPACE_LIVE
+#include "live.hpp"
+#endif
+
 namespace {
 
 namespace p3 = opspace::scenarios::p3;
 
 int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
-      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay]\n"
+      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay] [--live [--port N]]\n"
       << "  link7's tool pushes 10 N on the plane x = 0.05 and tracks y_d, z_d and the rotation about x\n"
       << "  --duration  simulated seconds (default " << p3::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
       << "  --csv       log file (default out/hw2-p3.csv in the repository); the plots (PNG, SVG) and the replay page\n"
       << "              (HTML) are written next to it, named after it (docs/visuals.md)\n"
-      << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n";
+      << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n"
+      << "  --live      run in real time in the browser, push the arm with the mouse (docs/live.md); until\n"
+      << "              Ctrl-C, or --duration simulated seconds. --port N: its port (default: a free one)\n";
   return code;
 }
 
@@ -91,6 +97,18 @@ int main(int argc, char** argv) {
   options.run.progress = &std::cerr;
   std::cout << "problem 3, iiwa unified motion and force control against a plane (" << OPSPACE_GRADED_LIBRARY
             << ")\n";
+  if (options.live) {
+#ifdef OPSPACE_LIVE
+    return cli::guarded(argv[0], [&] {
+      opspace::live::P3Lab lab(&opspace::hw2::p3::control);
+      return cli::serve_live(
+          lab, options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p3::figures(lab.result()); },
+          [&] { return p3::replay_scene(lab.result()); });
+    });
+#else
+    return cli::no_live(argv[0]);
+#endif
+  }
   return cli::guarded(argv[0], [&] {
     const p3::Result result = p3::run(&opspace::hw2::p3::control, options.run);
     print_summary(result, options.run.duration, options.run.csv_path);

@@ -19,6 +19,10 @@
 #include "cli.hpp"
 #include "reference_runs.hpp"
 
+#ifdef OPSPACE_LIVE
+#include "live.hpp"
+#endif
+
 namespace {
 
 namespace p4 = opspace::scenarios::p4;
@@ -27,13 +31,15 @@ using hw::Target;
 
 int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
-      << "usage: " << program << " [z|y|all] [--duration SECONDS] [--no-plots] [--no-replay]\n"
+      << "usage: " << program << " [z|y|all] [--duration SECONDS] [--no-plots] [--no-replay] [--live [--port N]]\n"
       << "  z    question v: move the tip 10 cm down along Z0 (elbow lock)\n"
       << "  y    question v: move the tip 10 cm along Y0 (overhead lock)\n"
       << "  all  both (default)\n"
       << "  --duration  simulated seconds per run (default " << p4::kDuration << ", at most " << cli::kMaxDuration << ")\n"
       << "Logs: out/hw2-p4-<z|y>.csv (your controller), out/hw2-p4-<z|y>-plain.csv in the repository;\n"
-      << "plots and a 3D replay page out/hw2-p4-<z|y>-* next to them (docs/visuals.md)\n";
+      << "plots and a 3D replay page out/hw2-p4-<z|y>-* next to them (docs/visuals.md)\n"
+      << "  --live      question v live in the browser toward z (or y if named first): drag the arm, switch to\n"
+      << "              the plain law (docs/live.md); until Ctrl-C, or --duration. --port N: its port\n";
   return code;
 }
 
@@ -156,6 +162,21 @@ int main(int argc, char** argv) {
   cli::Options& options = command.options;
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
   std::cout << "problem 4, 3R elbow arm (" << OPSPACE_GRADED_LIBRARY << ")\n";
+  if (options.live) {  // question v toward the first target named (z by default)
+#ifdef OPSPACE_LIVE
+    return cli::guarded(argv[0], [&] {
+      const Target target = command.targets.front();
+      opspace::live::P4Lab lab(target, &hw::control);
+      const std::string prefix = cli::output_path(std::string("hw2-p4-") + (target == Target::kAlongZ0 ? "z" : "y"));
+      return cli::serve_live(
+          lab, options, prefix,
+          [&] { return p4::figures(target, lab.result(), lab.result()); },
+          [&] { return p4::replay_scene(target, lab.result(), lab.result()); });
+    });
+#else
+    return cli::no_live(argv[0]);
+#endif
+  }
   return cli::guarded(argv[0], [&] {
     {
       // Your functions of questions i-iv run outside any closed loop: watched as one step.

@@ -13,7 +13,7 @@
 #include "opspace/hw2/p1b.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
-#include "opspace/live/p1b_lab.hpp"
+#include "opspace/live/labs.hpp"
 #include "opspace/live/run.hpp"
 #include "opspace/live/session.hpp"
 
@@ -90,6 +90,25 @@ TEST_CASE("pause holds the time, reset returns to the start, the law and gains s
   CHECK_MESSAGE(lab.part() == Part::kDynamicallyConsistentNullspace, "a reset restores the starting law");
   CHECK((lab.simulation().q() - p1b::initial_q()).norm() == 0.0);
   CHECK_THROWS_AS(session.submit(R"({"id":6,"command":"law","value":7})"), live::CommandError);
+}
+
+TEST_CASE("a push from the page pulls the picked link with the spring until it is released") {
+  live::P1bLab lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::Session session(lab, "");
+  // The elbow (body 2, the PUMA's third of six bodies) pulled 10 cm up from where it is.
+  const Eigen::Vector3d elbow = lab.simulation().body_pose(2).translation();
+  session.submit(R"({"id":1,"command":"push","body":2,"point":[0,0,0],"target":[)" + std::to_string(elbow.x()) + "," +
+                 std::to_string(elbow.y()) + "," + std::to_string(elbow.z() + 0.1) + "]}");
+  session.apply_queued();
+  session.step();
+  const std::string pushing = session.frame(1.0);
+  CHECK_MESSAGE(pushing.find("\"push\":{\"body\":2") != std::string::npos, pushing);
+  CHECK_MESSAGE(pushing.find("\"force\":[") != std::string::npos, "the frame carries the spring's force");
+  session.submit(R"({"id":2,"command":"release"})");
+  session.apply_queued();
+  CHECK(session.frame(1.0).find("\"push\":null") != std::string::npos);
+  CHECK_THROWS_AS(session.submit(R"({"id":3,"command":"push","body":6,"point":[0,0,0],"target":[0,0,0]})"),
+                  live::CommandError);
 }
 
 TEST_CASE("a controller that returns NaN stops the run with its message, and a reset starts again") {

@@ -1,5 +1,5 @@
-// Problem 1b live (live/p1b_lab.hpp).
-#include "opspace/live/p1b_lab.hpp"
+// Problem 1b live (live/labs.hpp).
+#include "opspace/live/labs.hpp"
 
 namespace opspace::live {
 
@@ -17,48 +17,29 @@ int law_of(Part part) {
   return 2;
 }
 
-LabInfo describe_lab(Part part) {
-  LabInfo info;
-  info.program = "hw2-p1";
-  info.title = "hw2-p1: problem 1b on the PUMA 560, live";
-  info.subtitle = "push the elbow: under PART3 the tip holds, under PART2 it wanders";
-  for (const Part p : kLaws) info.laws.push_back(p1b::describe(p));
-  info.law = law_of(part);
-  const hw2::p1b::Goal g = p1b::goal(0.0, p1b::initial_q());
-  // Ranges that keep the run stable: the tip PD is critically damped at kvx = 2 sqrt(kpx).
-  info.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},
-                {"kvx", "kv, tip (1/s)", 2.0, 60.0, g.kvx},
-                {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
-  info.plots = {{"tip error", "mm", {{"|x - x_d|", "#e74c3c"}}},
-                {"joint 2", "rad", {{"q2", "#2c7be5"}, {"q2_d", "#7f8c8d"}}}};
-  info.markers = {{"x_d", "target x_d", "#e74c3c", 0.02}, {"x", "tip x", "#2c7be5", 0.012}};
-  return info;
-}
-
 }  // namespace
 
 P1bLab::P1bLab(Part part, p1b::Controller control)
-    : info_(describe_lab(part)), control_(std::move(control)), x_d_(p1b::goal(0.0, p1b::initial_q()).x_d) {
+    : control_(std::move(control)), x_d_(p1b::goal(0.0, p1b::initial_q()).x_d) {
+  info_.program = "hw2-p1";
+  info_.title = "hw2-p1: problem 1b on the PUMA 560, live";
+  info_.subtitle = "push the elbow: under PART3 the tip holds, under PART2 it wanders";
+  for (const Part p : kLaws) info_.laws.push_back(p1b::describe(p));
+  info_.law = law_of(part);
+  const hw2::p1b::Goal g = p1b::goal(0.0, p1b::initial_q());
+  // Ranges that keep the run stable: the tip PD is critically damped at kvx = 2 sqrt(kpx).
+  info_.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},
+                 {"kvx", "kv, tip (1/s)", 2.0, 60.0, g.kvx},
+                 {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
+  info_.plots = {{"tip error", "mm", {{"|x - x_d|", "#e74c3c"}}},
+                 {"joint 2", "rad", {{"q2", "#2c7be5"}, {"q2_d", "#7f8c8d"}}}};
+  info_.markers = {{"x_d", "target x_d", "#e74c3c", 0.02}, {"x", "tip x", "#2c7be5", 0.012}};
   reset();
 }
 
-void P1bLab::reset() {
-  loop_ = std::make_unique<p1b::Loop>(kLaws[info_.law], control_);
-  result_ = p1b::Result{};
-}
+std::unique_ptr<p1b::Loop> P1bLab::make_loop() const { return std::make_unique<p1b::Loop>(kLaws[info_.law], control_); }
 
 void P1bLab::set_law(int law) { loop_->part = kLaws[law]; }
-
-void P1bLab::set_gain(int gain, double value) {
-  double* gains[] = {&loop_->gains.kpx, &loop_->gains.kvx, &loop_->gains.kvj};
-  *gains[gain] = value;
-}
-
-const Eigen::VectorXd& P1bLab::tick() {
-  result_.samples.push_back(loop_->tick());
-  tau_ = result_.samples.back().tau;
-  return tau_;
-}
 
 void P1bLab::plot_values(std::vector<double>& values) const {
   const p1b::Sample& s = result_.samples.back();

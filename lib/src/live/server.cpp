@@ -63,6 +63,9 @@ Server::Server(std::string page, int port, CommandHandler on_command) : impl_(st
   s.page = std::move(page);
   s.on_command = std::move(on_command);
   s.http.set_payload_max_length(kMaxCommandBytes);
+  // A page's idle connection is closed after 1 s (httplib's default is 5 s), so Ctrl-C ends the
+  // program within about a second with a page open.
+  s.http.set_keep_alive_timeout(1);
   s.http.set_pre_routing_handler([&s](const httplib::Request& req, httplib::Response& res) {
     const bool foreign = !s.own_host(req.get_header_value("Host")) ||
                          (req.has_header("Origin") && !s.own_origin(req.get_header_value("Origin")));

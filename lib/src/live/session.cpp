@@ -41,6 +41,7 @@ std::vector<std::string> session_columns(const Lab& lab) {
 Session::Session(Lab& lab, const std::string& csv_path, const Spring& spring) : lab_(lab), spring_(spring) {
   limits_.laws = static_cast<int>(lab.info().laws.size());
   limits_.gains = lab.info().gains;
+  limits_.bodies = lab.simulation().model().dof();
   if (!csv_path.empty()) csv_ = std::make_unique<CsvLog>(csv_path, session_columns(lab));
   reset();
   resets_ = 0;

@@ -59,9 +59,6 @@ std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d) {
 
 namespace {
 
-// A live gain when one is set, else the goal's.
-double or_default(double live, double goal) { return std::isnan(live) ? goal : live; }
-
 std::string who(hw2::p1b::Part part) {
   return "your " + describe(part).substr(0, describe(part).find(':')) + " controller";
 }
@@ -132,9 +129,7 @@ Sample Loop::tick() {
   const double t = sim_.time();
   state_ = &observer_.observe(t, sim_.q(), sim_.qdot());
   hw2::p1b::Goal g = goal(t, state_->q);
-  g.kpx = or_default(gains.kpx, g.kpx);
-  g.kvx = or_default(gains.kvx, g.kvx);
-  g.kvj = or_default(gains.kvj, g.kvj);
+  gains.apply(g);
   const Vector6d tau = control_(part, *state_, g);
   if (part != named_part_) {  // the live lab switched laws
     named_part_ = part;

@@ -18,24 +18,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 
-std::vector<std::string> csv_columns() {
-  return {"t",    "x",    "y",    "z",    "l0",   "l1",   "l2",   "l3",   "x_d",  "y_d",
-          "z_d",  "l0_d", "l1_d", "l2_d", "l3_d", "position_error", "orientation_error",
-          "q1",   "q2",   "q3",   "q4",   "q5",   "q6",   "q7",   "tau1", "tau2", "tau3",
-          "tau4", "tau5", "tau6", "tau7"};
-}
 
-std::vector<double> csv_row(const Sample& s) {
-  std::vector<double> row = {s.t};
-  for (int i = 0; i < 3; ++i) row.push_back(s.x_p(i));
-  for (int i = 0; i < 4; ++i) row.push_back(s.lambda(i));
-  for (int i = 0; i < 7; ++i) row.push_back(s.x_d(i));
-  row.push_back((s.x_p - s.x_d.head<3>()).norm());
-  row.push_back(rotation_angle_between(s.lambda, s.x_d.tail<4>()));
-  for (int i = 0; i < 7; ++i) row.push_back(s.q(i));
-  for (int i = 0; i < 7; ++i) row.push_back(s.tau(i));
-  return row;
-}
 
 void summarise(Result& result, const Model& iiwa, double dt) {
   Summary& s = result.summary;
@@ -85,6 +68,25 @@ void summarise(Result& result, const Model& iiwa, double dt) {
 }
 
 }  // namespace
+
+std::vector<std::string> csv_columns() {
+  return {"t",    "x",    "y",    "z",    "l0",   "l1",   "l2",   "l3",   "x_d",  "y_d",
+          "z_d",  "l0_d", "l1_d", "l2_d", "l3_d", "position_error", "orientation_error",
+          "q1",   "q2",   "q3",   "q4",   "q5",   "q6",   "q7",   "tau1", "tau2", "tau3",
+          "tau4", "tau5", "tau6", "tau7"};
+}
+
+std::vector<double> csv_row(const Sample& s) {
+  std::vector<double> row = {s.t};
+  for (int i = 0; i < 3; ++i) row.push_back(s.x_p(i));
+  for (int i = 0; i < 4; ++i) row.push_back(s.lambda(i));
+  for (int i = 0; i < 7; ++i) row.push_back(s.x_d(i));
+  row.push_back((s.x_p - s.x_d.head<3>()).norm());
+  row.push_back(rotation_angle_between(s.lambda, s.x_d.tail<4>()));
+  for (int i = 0; i < 7; ++i) row.push_back(s.q(i));
+  for (int i = 0; i < 7; ++i) row.push_back(s.tau(i));
+  return row;
+}
 
 Vector7d initial_q() {
   return (Vector7d() << 125.9, 39.2, -49.2, 70.0, -62.4, 80.2, -172.8).finished() * kDeg;
@@ -146,29 +148,34 @@ const hw2::p2::State& Observer::observe(double t, const Eigen::Ref<const Eigen::
   return s;
 }
 
-Result run(Controller control, DesiredAcceleration desired_acceleration, const RunOptions& options) {
-  const Model iiwa = load_urdf(robot_path(kRobotFile));
-  Observer observer(iiwa);
-  Simulation sim(iiwa);
-  sim.set_state(initial_q(), Vector7d::Zero());
+Loop::Loop(Controller control, DesiredAcceleration desired_acceleration)
+    : model_(load_urdf(robot_path(kRobotFile))), observer_(model_), sim_(model_), control_(std::move(control)),
+      desired_acceleration_(std::move(desired_acceleration)) {
+  sim_.set_state(initial_q(), Vector7d::Zero());
+}
 
+Sample Loop::tick() {
+  const double t = sim_.time();
+  hw2::p2::Goal g = goal(t);
+  gains.apply(g);
+  g.xddot_d = desired_acceleration_(t);
+  if (!g.xddot_d.allFinite()) {
+    throw ControllerError("your desired_acceleration (2a) returned a value that is not finite at t = " +
+                              std::to_string(t) + " s",
+                          t);
+  }
+  const hw2::p2::State& state = observer_.observe(t, sim_.q(), sim_.qdot(), g.x_d.tail<4>());
+  const Vector7d tau = control_(state, g);
+  check_torque(tau, 7, t, "your controller");
+  return Sample{t, state.x_p, state.lambda, g.x_d, state.q, tau};
+}
+
+Result run(Controller control, DesiredAcceleration desired_acceleration, const RunOptions& options) {
+  Loop loop(std::move(control), std::move(desired_acceleration));
   Result result = run_closed_loop<Result>(
-      sim, "hw2-p2", "problem 2", csv_columns(), options,
-      [&](double t) {
-        hw2::p2::Goal g = goal(t);
-        g.xddot_d = desired_acceleration(t);
-        if (!g.xddot_d.allFinite()) {
-          throw ControllerError("your desired_acceleration (2a) returned a value that is not finite at t = " +
-                                    std::to_string(t) + " s",
-                                t);
-        }
-        const hw2::p2::State& state = observer.observe(t, sim.q(), sim.qdot(), g.x_d.tail<4>());
-        const Vector7d tau = control(state, g);
-        check_torque(tau, 7, t, "your controller");
-        return Sample{t, state.x_p, state.lambda, g.x_d, state.q, tau};
-      },
+      loop.simulation(), "hw2-p2", "problem 2", csv_columns(), options, [&](double) { return loop.tick(); },
       &csv_row);
-  summarise(result, iiwa, sim.settings().dt);
+  summarise(result, loop.model(), loop.simulation().settings().dt);
   return result;
 }
 

@@ -14,30 +14,7 @@ namespace opspace::scenarios::p3 {
 
 namespace {
 
-std::vector<std::string> csv_columns() {
-  return {"t",       "x",        "y",        "z",        "l0",       "l1",       "l2",
-          "l3",      "y_d",      "z_d",      "l0_d",     "l1_d",     "l2_d",     "l3_d",
-          "Fx",      "Fy",       "Fz",       "Mx",       "My",       "Mz",       "contact_points",
-          "force_error", "tilt", "rotation_x_error", "q1",  "q2",       "q3",       "q4",
-          "q5",      "q6",       "q7",       "tau1",     "tau2",     "tau3",     "tau4",
-          "tau5",    "tau6",     "tau7"};
-}
 
-std::vector<double> csv_row(const Sample& s) {
-  std::vector<double> row = {s.t};
-  for (int i = 0; i < 3; ++i) row.push_back(s.x_p(i));
-  for (int i = 0; i < 4; ++i) row.push_back(s.lambda(i));
-  for (int i = 1; i < 7; ++i) row.push_back(s.x_d(i));
-  for (int i = 0; i < 3; ++i) row.push_back(s.tool_force(i));
-  for (int i = 0; i < 3; ++i) row.push_back(s.tool_moment(i));
-  row.push_back(s.contact_points);
-  row.push_back(s.tool_force.x() - kPushForce);
-  row.push_back(s.tilt);
-  row.push_back(s.rotation_x_error);
-  for (int i = 0; i < 7; ++i) row.push_back(s.q(i));
-  for (int i = 0; i < 7; ++i) row.push_back(s.tau(i));
-  return row;
-}
 
 // A push this small is no contact: Bullet reports impulses, a touching contact at rest carries
 // the arm's weight share (newtons); 1e-6 N is rounding.
@@ -103,6 +80,31 @@ void summarise(Result& result) {
 
 }  // namespace
 
+std::vector<std::string> csv_columns() {
+  return {"t",       "x",        "y",        "z",        "l0",       "l1",       "l2",
+          "l3",      "y_d",      "z_d",      "l0_d",     "l1_d",     "l2_d",     "l3_d",
+          "Fx",      "Fy",       "Fz",       "Mx",       "My",       "Mz",       "contact_points",
+          "force_error", "tilt", "rotation_x_error", "q1",  "q2",       "q3",       "q4",
+          "q5",      "q6",       "q7",       "tau1",     "tau2",     "tau3",     "tau4",
+          "tau5",    "tau6",     "tau7"};
+}
+
+std::vector<double> csv_row(const Sample& s) {
+  std::vector<double> row = {s.t};
+  for (int i = 0; i < 3; ++i) row.push_back(s.x_p(i));
+  for (int i = 0; i < 4; ++i) row.push_back(s.lambda(i));
+  for (int i = 1; i < 7; ++i) row.push_back(s.x_d(i));
+  for (int i = 0; i < 3; ++i) row.push_back(s.tool_force(i));
+  for (int i = 0; i < 3; ++i) row.push_back(s.tool_moment(i));
+  row.push_back(s.contact_points);
+  row.push_back(s.tool_force.x() - kPushForce);
+  row.push_back(s.tilt);
+  row.push_back(s.rotation_x_error);
+  for (int i = 0; i < 7; ++i) row.push_back(s.q(i));
+  for (int i = 0; i < 7; ++i) row.push_back(s.tau(i));
+  return row;
+}
+
 Vector7d initial_q() {
   // Newton steps q <- q - J0^+ [x_p - x_pd(0); delta_phi] from problem 2's start (5 mm and
   // under a degree from the pose) converge quadratically: three reach round-off.
@@ -136,39 +138,42 @@ hw2::p3::Goal goal(double t) {
   return g;
 }
 
-Result run(Controller control, const RunOptions& options) {
-  const Model iiwa = load_urdf(robot_path(kRobotFile));
-  Observer observer(iiwa);
-  Simulation sim(iiwa);
+Loop::Loop(Controller control)
+    : model_(load_urdf(robot_path(kRobotFile))), observer_(model_), sim_(model_), control_(std::move(control)) {
   // The half-space x >= 0.05, i.e. -x <= -0.05: its surface faces the robot (normal -x).
-  sim.add_plane(-Eigen::Vector3d::UnitX(), -kPlaneX, Material{0.0, 0.0});
-  sim.set_state(initial_q(), Vector7d::Zero());
-  const int tool_body = sim.link_body(kTipLink);
+  sim_.add_plane(-Eigen::Vector3d::UnitX(), -kPlaneX, Material{0.0, 0.0});
+  sim_.set_state(initial_q(), Vector7d::Zero());
+  tool_body_ = sim_.link_body(kTipLink);
+}
 
-  Result result = run_closed_loop<Result>(
-      sim, "hw2-p3", "problem 3", csv_columns(), options,
-      [&](double t) {
-        const hw2::p3::Goal g = goal(t);
-        const hw2::p3::State& state = observer.observe(t, sim.q(), sim.qdot(), g.x_d.tail<4>());
-        const Vector7d tau = control(state, g);
-        check_torque(tau, 7, t, "your controller");
-        Sample sample;
-        sample.t = t;
-        sample.x_p = state.x_p;
-        sample.lambda = state.lambda;
-        sample.x_d = g.x_d;
-        const Wrench& w = sim.contact_wrench(tool_body);
-        sample.tool_force = -w.force;
-        sample.tool_moment = -w.moment;
-        for (const Contact& c : sim.contacts()) sample.contact_points += c.body == tool_body ? 1 : 0;
-        const Eigen::Vector3d tool_axis = rotation_matrix(state.lambda).col(2);
-        sample.tilt = std::atan2(tool_axis.cross(Eigen::Vector3d::UnitX()).norm(), tool_axis.x());
-        sample.rotation_x_error = orientation_error(state.lambda, g.x_d.tail<4>()).x();
-        sample.q = state.q;
-        sample.tau = tau;
-        return sample;
-      },
-      &csv_row);
+Sample Loop::tick() {
+  const double t = sim_.time();
+  hw2::p3::Goal g = goal(t);
+  gains.apply(g);
+  const hw2::p3::State& state = observer_.observe(t, sim_.q(), sim_.qdot(), g.x_d.tail<4>());
+  const Vector7d tau = control_(state, g);
+  check_torque(tau, 7, t, "your controller");
+  Sample sample;
+  sample.t = t;
+  sample.x_p = state.x_p;
+  sample.lambda = state.lambda;
+  sample.x_d = g.x_d;
+  const Wrench& w = sim_.contact_wrench(tool_body_);
+  sample.tool_force = -w.force;
+  sample.tool_moment = -w.moment;
+  for (const Contact& c : sim_.contacts()) sample.contact_points += c.body == tool_body_ ? 1 : 0;
+  const Eigen::Vector3d tool_axis = rotation_matrix(state.lambda).col(2);
+  sample.tilt = std::atan2(tool_axis.cross(Eigen::Vector3d::UnitX()).norm(), tool_axis.x());
+  sample.rotation_x_error = orientation_error(state.lambda, g.x_d.tail<4>()).x();
+  sample.q = state.q;
+  sample.tau = tau;
+  return sample;
+}
+
+Result run(Controller control, const RunOptions& options) {
+  Loop loop(std::move(control));
+  Result result = run_closed_loop<Result>(loop.simulation(), "hw2-p3", "problem 3", csv_columns(), options,
+                                          [&](double) { return loop.tick(); }, &csv_row);
   summarise(result);
   return result;
 }

@@ -16,14 +16,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 
-std::vector<std::string> csv_columns() {
-  return {"t", "x", "y", "z", "x_d", "y_d", "z_d", "error", "q1", "q2", "q3", "tau1", "tau2", "tau3"};
-}
 
-std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d) {
-  return {s.t,      s.x(0),   s.x(1),   s.x(2),     x_d(0),     x_d(1),     x_d(2),
-          (s.x - x_d).norm(), s.q(0), s.q(1), s.q(2), s.tau(0), s.tau(1), s.tau(2)};
-}
 
 void summarise(Result& result, const Eigen::Vector3d& x_d) {
   Summary& s = result.summary;
@@ -46,29 +39,16 @@ void summarise(Result& result, const Eigen::Vector3d& x_d) {
   if (!result.failure.empty()) s.reach_time = -1.0;
 }
 
-// The closed loop shared by run() and run_plain(): `law` maps the State to torques.
-template <class Law>
-Result simulate(Target target, const std::string& who, Law law, const RunOptions& options) {
-  const Model rrr = load_urdf(robot_path(kRobotFile));
-  Observer observer(rrr);
-  Simulation sim(rrr);
-  sim.set_state(initial_q(target), Eigen::Vector3d::Zero());
-  const hw2::p4::Goal g = goal(target);
+}  // namespace
 
-  Result result = run_closed_loop<Result>(
-      sim, "hw2-p4", "problem 4, question v " + describe(target) + ", " + who, csv_columns(), options,
-      [&](double t) {
-        const hw2::p4::State& state = observer.observe(t, sim.q(), sim.qdot());
-        const Eigen::Vector3d tau = law(state, observer.exact(), g);
-        check_torque(tau, 3, t, who);
-        return Sample{t, state.x, state.q, tau};
-      },
-      [&](const Sample& s) { return csv_row(s, g.x_d); });
-  summarise(result, g.x_d);
-  return result;
+std::vector<std::string> csv_columns() {
+  return {"t", "x", "y", "z", "x_d", "y_d", "z_d", "error", "q1", "q2", "q3", "tau1", "tau2", "tau3"};
 }
 
-}  // namespace
+std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d) {
+  return {s.t,      s.x(0),   s.x(1),   s.x(2),     x_d(0),     x_d(1),     x_d(2),
+          (s.x - x_d).norm(), s.q(0), s.q(1), s.q(2), s.tau(0), s.tau(1), s.tau(2)};
+}
 
 Eigen::Vector3d tip_point() { return Eigen::Vector3d::Zero(); }
 
@@ -142,10 +122,40 @@ std::string describe(Target target) {
   return target == Target::kAlongZ0 ? "along Z0 (elbow lock)" : "along Y0 (overhead lock)";
 }
 
+Loop::Loop(Target target, Law l, std::string name)
+    : law(std::move(l)), who(std::move(name)), model_(load_urdf(robot_path(kRobotFile))), observer_(model_),
+      sim_(model_), goal_(p4::goal(target)) {
+  sim_.set_state(initial_q(target), Eigen::Vector3d::Zero());
+}
+
+Sample Loop::tick() {
+  const double t = sim_.time();
+  state_ = &observer_.observe(t, sim_.q(), sim_.qdot());
+  hw2::p4::Goal g = goal_;
+  gains.apply(g);
+  const Eigen::Vector3d tau = law(*state_, observer_.exact(), g);
+  check_torque(tau, 3, t, who);
+  return Sample{t, state_->x, state_->q, tau};
+}
+
+namespace {
+
+Result simulate(Target target, const std::string& who, Law law, const RunOptions& options) {
+  Loop loop(target, std::move(law), who);
+  const Eigen::Vector3d x_d = loop.goal().x_d;
+  Result result = run_closed_loop<Result>(
+      loop.simulation(), "hw2-p4", "problem 4, question v " + describe(target) + ", " + who, csv_columns(), options,
+      [&](double) { return loop.tick(); }, [&](const Sample& s) { return csv_row(s, x_d); });
+  summarise(result, x_d);
+  return result;
+}
+
+}  // namespace
+
 Result run(Target target, Controller control, const RunOptions& options) {
   return simulate(
       target, "your controller " + describe(target),
-      [&](const hw2::p4::State& s, const TaskSpace&, const hw2::p4::Goal& g) { return control(target, s, g); },
+      [control, target](const hw2::p4::State& s, const TaskSpace&, const hw2::p4::Goal& g) { return control(target, s, g); },
       options);
 }
 

@@ -2,7 +2,9 @@
 /// What every problem's closed-loop run shares.
 #pragma once
 
+#include <cmath>
 #include <iosfwd>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,21 @@ struct RunOptions {
   /// Wall-clock seconds one step (the controller's tick and the simulation's step) may take
   /// before a Watchdog (scenarios/watchdog.hpp) stops the program; 0: no watchdog.
   double watchdog = 0.0;
+};
+
+/// Gains the live lab may change (docs/live.md); NaN: the goal's own.
+struct GainOverrides {
+  double kpx = std::numeric_limits<double>::quiet_NaN();  ///< task stiffness (1/s^2)
+  double kvx = std::numeric_limits<double>::quiet_NaN();  ///< task damping (1/s)
+  double kvj = std::numeric_limits<double>::quiet_NaN();  ///< joint damping (1/s)
+
+  /// Sets goal.kpx, kvx, kvj to those overridden.
+  template <class Goal>
+  void apply(Goal& goal) const {
+    if (!std::isnan(kpx)) goal.kpx = kpx;
+    if (!std::isnan(kvx)) goal.kvx = kvx;
+    if (!std::isnan(kvj)) goal.kvj = kvj;
+  }
 };
 
 /// What a closed-loop run recorded: a problem's Result is RunResult<its Sample, its Summary>.

@@ -110,13 +110,6 @@ struct Summary {
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
-/// Gains the live lab may change (docs/live.md); NaN: the goal's own (goal()).
-struct GainOverrides {
-  double kpx = std::numeric_limits<double>::quiet_NaN();  ///< task stiffness (1/s^2)
-  double kvx = std::numeric_limits<double>::quiet_NaN();  ///< task damping (1/s)
-  double kvj = std::numeric_limits<double>::quiet_NaN();  ///< joint damping (1/s)
-};
-
 /// Problem 1b's closed loop one tick at a time, shared by run() and the live lab: the PUMA,
 /// its Observer and its simulation at q(0), at rest, t = 0.
 class Loop {

@@ -14,6 +14,7 @@
 #include "opspace/model/model.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
+#include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
 
@@ -139,6 +140,30 @@ struct Summary {
 };
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded
+
+/// Problem 2's closed loop one tick at a time, shared by run() and the live lab: the iiwa, its
+/// Observer and its simulation at initial_q(), at rest, t = 0.
+class Loop {
+ public:
+  /// Loads iiwa7.urdf and builds the simulation.
+  Loop(Controller control, DesiredAcceleration desired_acceleration);
+  /// The State at the simulation's time, the controller's torques (checked): that instant's Sample.
+  Sample tick();
+  Simulation& simulation() { return sim_; }      ///< the simulated iiwa
+  const Model& model() const { return model_; }  ///< the controller's model of it
+  GainOverrides gains;                           ///< live changes to goal()'s gains
+
+ private:
+  Model model_;
+  Observer observer_;
+  Simulation sim_;
+  Controller control_;
+  DesiredAcceleration desired_acceleration_;
+};
+
+/// The CSV log's columns, and one Sample's row.
+std::vector<std::string> csv_columns();
+std::vector<double> csv_row(const Sample& s);  ///< see csv_columns()
 
 /// Runs problem 2's scenario: every 1 ms step, goal.xddot_d = desired_acceleration(t), then
 /// tau = control(state, goal).

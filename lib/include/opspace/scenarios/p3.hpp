@@ -128,6 +128,31 @@ struct Summary {
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
+/// Problem 3's closed loop one tick at a time, shared by run() and the live lab: the iiwa, the
+/// plane x = kPlaneX and the simulation at initial_q(), at rest, t = 0.
+class Loop {
+ public:
+  /// Loads iiwa7.urdf and builds the simulation with its plane.
+  explicit Loop(Controller control);
+  /// The State at the simulation's time, the controller's torques (checked), the tool's
+  /// contact force: that instant's Sample.
+  Sample tick();
+  Simulation& simulation() { return sim_; }      ///< the simulated iiwa and its plane
+  const Model& model() const { return model_; }  ///< the controller's model of the iiwa
+  GainOverrides gains;                           ///< live changes to goal()'s gains
+
+ private:
+  Model model_;
+  Observer observer_;
+  Simulation sim_;
+  Controller control_;
+  int tool_body_;
+};
+
+/// The CSV log's columns, and one Sample's row.
+std::vector<std::string> csv_columns();
+std::vector<double> csv_row(const Sample& s);  ///< see csv_columns()
+
 /// Runs problem 3's scenario: the plane at x = 0.05, then every 1 ms step
 /// tau = control(state, goal(t)).
 Result run(Controller control, const RunOptions& options);

@@ -14,6 +14,7 @@
 #include "opspace/model/model.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
+#include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
 
@@ -114,6 +115,37 @@ using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
 /// Runs question v's scenario toward `target` with `control` every 1 ms step.
 Result run(Target target, Controller control, const RunOptions& options);
+
+/// A law of question v's run: the State, the exact (not damped) task-space matrices, the Goal.
+using Law = std::function<Eigen::Vector3d(const hw2::p4::State&, const TaskSpace&, const hw2::p4::Goal&)>;
+
+/// Question v's closed loop one tick at a time, shared by run(), run_plain() and the live lab:
+/// the 3R arm at initial_q(target), at rest, t = 0, driven by `law`.
+class Loop {
+ public:
+  /// Loads rrr.urdf and builds the simulation; `who` names the law in errors ("your controller").
+  Loop(Target target, Law law, std::string who);
+  /// The State at the simulation's time, the law's torques (checked): that instant's Sample.
+  Sample tick();
+  Simulation& simulation() { return sim_; }      ///< the simulated arm
+  const Model& model() const { return model_; }  ///< the controller's model of it
+  const hw2::p4::State& state() const { return *state_; }  ///< the last tick's State
+  const hw2::p4::Goal& goal() const { return goal_; }       ///< question v's goal for the target
+  Law law;              ///< applied from the next tick
+  std::string who;      ///< names the law in errors
+  GainOverrides gains;  ///< live changes to the goal's gains
+
+ private:
+  Model model_;
+  Observer observer_;
+  Simulation sim_;
+  hw2::p4::Goal goal_;
+  const hw2::p4::State* state_ = nullptr;
+};
+
+/// The CSV log's columns, and one Sample's row (x_d: the tip's target).
+std::vector<std::string> csv_columns();
+std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d);  ///< see csv_columns()
 /// The same from the same start with plain_control().
 Result run_plain(Target target, const RunOptions& options);
 

@@ -1,0 +1,83 @@
+/// @file live/labs.hpp
+/// The four problems live (docs/live.md): what each page plots, the laws it switches between and
+/// its gains. Each records its current run as the offline run's Result.
+#pragma once
+
+#include "opspace/live/loop_lab.hpp"
+#include "opspace/scenarios/p1b.hpp"
+#include "opspace/scenarios/p2.hpp"
+#include "opspace/scenarios/p3.hpp"
+#include "opspace/scenarios/p4.hpp"
+
+namespace opspace::live {
+
+/// Problem 1b: laws PART1, PART2, PART3; push the elbow: under PART3 the tip holds, under
+/// PART2 it wanders. Plots: tip error, q2 against q2_d.
+class P1bLab final : public LoopLab<scenarios::p1b::Loop, scenarios::p1b::Result> {
+ public:
+  P1bLab(hw2::p1b::Part part, scenarios::p1b::Controller control);
+  void set_law(int law) override;
+  void plot_values(std::vector<double>& values) const override;
+  void marker_positions(std::vector<Eigen::Vector3d>& positions) const override;
+  std::vector<std::string> csv_columns() const override { return scenarios::p1b::csv_columns(); }
+  std::vector<double> csv_row() const override;
+  hw2::p1b::Part part() const { return loop_->part; }  ///< the law in force
+
+ private:
+  std::unique_ptr<scenarios::p1b::Loop> make_loop() const override;
+  scenarios::p1b::Controller control_;
+  Eigen::Vector3d x_d_;
+};
+
+/// Problem 2: the iiwa tracks its trajectory; push the elbow while it tracks. Plots: position
+/// and orientation error.
+class P2Lab final : public LoopLab<scenarios::p2::Loop, scenarios::p2::Result> {
+ public:
+  P2Lab(scenarios::p2::Controller control, scenarios::p2::DesiredAcceleration desired_acceleration);
+  void plot_values(std::vector<double>& values) const override;
+  void marker_positions(std::vector<Eigen::Vector3d>& positions) const override;
+  std::vector<std::string> csv_columns() const override { return scenarios::p2::csv_columns(); }
+  std::vector<double> csv_row() const override { return scenarios::p2::csv_row(result_.samples.back()); }
+
+ private:
+  std::unique_ptr<scenarios::p2::Loop> make_loop() const override;
+  scenarios::p2::Controller control_;
+  scenarios::p2::DesiredAcceleration desired_acceleration_;
+};
+
+/// Problem 3: the tool pushes 10 N on the plane; pull it off and let it come back. Plots: F_x
+/// with its 10 ms mean against 10 N, the tool's tilt.
+class P3Lab final : public LoopLab<scenarios::p3::Loop, scenarios::p3::Result> {
+ public:
+  explicit P3Lab(scenarios::p3::Controller control);
+  void plot_values(std::vector<double>& values) const override;
+  void marker_positions(std::vector<Eigen::Vector3d>& positions) const override;
+  std::vector<std::string> csv_columns() const override { return scenarios::p3::csv_columns(); }
+  std::vector<double> csv_row() const override { return scenarios::p3::csv_row(result_.samples.back()); }
+
+ private:
+  std::unique_ptr<scenarios::p3::Loop> make_loop() const override;
+  scenarios::p3::Controller control_;
+};
+
+/// Problem 4, question v toward `target`: the student's law against the plain one; drag the arm
+/// into and out of the singularity. Plots: distance to the target, the singular values of Jv.
+class P4Lab final : public LoopLab<scenarios::p4::Loop, scenarios::p4::Result> {
+ public:
+  P4Lab(hw2::p4::Target target, scenarios::p4::Controller control);
+  void reset() override;
+  void set_law(int law) override;
+  void plot_values(std::vector<double>& values) const override;
+  void marker_positions(std::vector<Eigen::Vector3d>& positions) const override;
+  std::vector<std::string> csv_columns() const override { return scenarios::p4::csv_columns(); }
+  std::vector<double> csv_row() const override;
+  bool plain() const { return plain_; }  ///< the plain law is in force
+
+ private:
+  std::unique_ptr<scenarios::p4::Loop> make_loop() const override;
+  hw2::p4::Target target_;
+  scenarios::p4::Controller control_;
+  bool plain_ = false;
+};
+
+}  // namespace opspace::live
