@@ -1,8 +1,8 @@
 // Who the sandboxed program is. Two mechanisms, by what the grader is:
-// - as root, it switches to an unprivileged user of its own (OPSPACE_SANDBOX_USER,
-//   "opspace-runner" or "nobody"), groups first, then the user, so that the program can
-//   neither signal the grader's processes nor read root's files, and its process limit counts
-//   only that user's processes;
+// - as root, it switches to an unprivileged user (--sandbox-user; default_sandbox_user() is
+//   OPSPACE_SANDBOX_USER, "opspace-runner" or "nobody"), groups first, then the user, so that
+//   the program can neither signal the grader's processes nor read root's files, and its
+//   process limit counts only that user's processes;
 // - in a user namespace (an unprivileged grader), it maps its own ids onto themselves: the
 //   namespace's capabilities, which the mounts need, then go away at execve(), since its uid
 //   there is not 0.
