@@ -160,8 +160,8 @@ void apply_oracles(ProblemResult& result, const BuiltRunner& built) {
       r.findings.insert(r.findings.begin(), "uses the library's own answer " + oracle.name + ": not counted");
       r.interrupted = true;
     }
-    char cost[64];
-    std::snprintf(cost, sizeof cost, "the %d test%s it answers (%g points)", tests, tests == 1 ? "" : "s", points);
+    const std::string cost = "the " + std::to_string(tests) + " test" + (tests == 1 ? "" : "s") + " it answers (" +
+                             format_points(points) + " points)";
     result.notes.push_back("not allowed in problem " + result.problem->key + ": exercises/" + file_of(result.problem->key) +
                            " reaches " + names + ", which computes " + oracle.what + ": " + cost +
                            " earn 0. Write it yourself (docs/grader.md)");

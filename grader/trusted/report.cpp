@@ -8,13 +8,13 @@
 
 namespace opspace::grading {
 
-namespace {
-
-std::string points(double value) {
+std::string format_points(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%g", value);
   return buffer;
 }
+
+namespace {
 
 // What the student's side wrote (already escaped: student_text.hpp), each line behind "| " so
 // that it can never pass for a line of the report.
@@ -50,7 +50,7 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems)
   for (const ProblemResult& p : problems) {
     out << "\nProblem " << p.problem->key << ": " << p.problem->title << "\n";
     for (const TestResult& r : p.results) {
-      const std::string score = points(r.score) + "/" + points(r.test->points);
+      const std::string score = format_points(r.score) + "/" + format_points(r.test->points);
       out << "  " << status(r) << "  " << score << std::string(score.size() < 6 ? 6 - score.size() : 1, ' ')
           << r.test->name << "\n";
       if (r.score < r.test->points) {
@@ -62,16 +62,16 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems)
     if (!p.failure.empty()) print_failure(out, p.failure);
     for (const std::string& note : p.notes) out << "  ! " << note << "\n";
     if (!p.warnings.empty()) out << "  compiler warnings (not counted):\n" << quoted(p.warnings);
-    out << "  Problem " << p.problem->key << ": " << points(p.score) << " / " << points(p.max_score)
+    out << "  Problem " << p.problem->key << ": " << format_points(p.score) << " / " << format_points(p.max_score)
         << " points\n";
     total += p.score;
     total_max += p.max_score;
   }
   out << "\nScore per problem:\n";
   for (const ProblemResult& p : problems) {
-    out << "  " << p.problem->key << "  " << points(p.score) << " / " << points(p.max_score) << "\n";
+    out << "  " << p.problem->key << "  " << format_points(p.score) << " / " << format_points(p.max_score) << "\n";
   }
-  out << "Total: " << points(total) << " / " << points(total_max) << " points\n";
+  out << "Total: " << format_points(total) << " / " << format_points(total_max) << " points\n";
   if (total == 0.0 && problems.size() > 1 && problems.front().problem->key == "1a") {
     out << "Where to start: open exercises/p1a.cpp (the PP robot's formulas, guide docs/problem1a.md)\n"
         << "and grade it alone: bash scripts/grade --problem 1a\n";

@@ -21,6 +21,9 @@ struct ProblemResult {
   std::vector<std::string> notes;  ///< other things the student should know (oracle calls)
 };
 
+/// Points as the report and the grader's notes write them ("%g": 3, 2.5, 0.25).
+std::string format_points(double value);
+
 /// Runs every test of `problem` against `api`.
 ProblemResult grade(const Problem& problem, const Hw2Api& api);
 
