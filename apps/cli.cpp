@@ -103,9 +103,9 @@ int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& c
   if (!misplaced.empty()) return bad(argv[0], misplaced);
   if (command.options.run.csv_path.empty()) {
     command.options.run.csv_path =
-        output_path(command.comparing ? "hw2-p1-compare.csv"
-                    : command.part == Part::kTipPdWithoutJointDamping ? "hw2-p1-part1-no-damping.csv"
-                                                                       : "hw2-p1-part" + part + ".csv");
+        output_path(program_name(argv[0]) + (command.comparing ? "-compare.csv"
+                                             : command.part == Part::kTipPdWithoutJointDamping ? "-part1-no-damping.csv"
+                                                                                                : "-part" + part + ".csv"));
   }
   return -1;
 }
@@ -152,6 +152,12 @@ void print_summary_start(double time_reached, double duration, double reference_
     std::cout << "note: the grader and the reference run " << show(reference_duration, kSeconds)
               << "; over " << show(duration, kSeconds) << " the comparison below is only indicative\n";
   }
+}
+
+std::string program_name(const char* argv0) {
+  const std::string path = argv0 ? argv0 : "";
+  const std::string name = path.substr(path.find_last_of('/') + 1);
+  return name.empty() ? "hw2" : name;
 }
 
 std::string output_path(const std::string& name) {

@@ -129,6 +129,10 @@ int no_live(const char* program);
 /// Returns body(); an exception instead prints "program: what" on stderr and returns 1.
 int guarded(const char* program, const std::function<int()>& body);
 
+/// The program's name as it was run (argv[0] without its folder): its files start with it, so
+/// that hw2-p3 and the reference hw2-p3-sol never write over each other's log and pictures.
+std::string program_name(const char* argv0);
+
 /// The default path of the output `name` (e.g. "hw2-p3.csv"): in the repository's out/ (or in
 /// $OPSPACE_OUT if set), wherever the program runs from. Relative when out/ lies below the
 /// current directory ("out/hw2-p3.csv" from the repository's root), absolute otherwise.

@@ -25,7 +25,7 @@ int usage(const char* program, int code) {
       << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay] [--live [--port N]]\n"
       << "  link7 of the iiwa tracks x_d(t) and lambda_d(t) of problem 2\n"
       << "  --duration  simulated seconds (default " << p2::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
-      << "  --csv       log file (default out/hw2-p2.csv in the repository); plots and the 3D replay page are\n"
+      << "  --csv       log file (default out/" << cli::program_name(program) << ".csv in the repository); plots and the 3D replay page are\n"
       << "              written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay  skip those pictures\n"
       << "  --live      run in real time in the browser, push the arm with the mouse (docs/live.md); until\n"
@@ -82,7 +82,7 @@ void print_summary(const p2::Result& r, double duration, const std::string& csv)
 int main(int argc, char** argv) {
   cli::Options options;
   options.run.duration = p2::kDefaultDuration;
-  options.run.csv_path = cli::output_path("hw2-p2.csv");
+  options.run.csv_path = cli::output_path(cli::program_name(argv[0]) + ".csv");
   cli::Program program;
   program.usage = &usage;
   const int code = cli::parse(argc, argv, 1, program, options);

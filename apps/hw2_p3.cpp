@@ -26,7 +26,7 @@ int usage(const char* program, int code) {
       << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay] [--live [--port N]]\n"
       << "  link7's tool pushes 10 N on the plane x = 0.05 and tracks y_d, z_d and the rotation about x\n"
       << "  --duration  simulated seconds (default " << p3::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
-      << "  --csv       log file (default out/hw2-p3.csv in the repository); the plots (PNG, SVG) and the replay page\n"
+      << "  --csv       log file (default out/" << cli::program_name(program) << ".csv in the repository); the plots (PNG, SVG) and the replay page\n"
       << "              (HTML) are written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n"
       << "  --live      run in real time in the browser, push the arm with the mouse (docs/live.md); until\n"
@@ -88,7 +88,7 @@ void print_summary(const p3::Result& r, double duration, const std::string& csv)
 int main(int argc, char** argv) {
   cli::Options options;
   options.run.duration = p3::kDefaultDuration;
-  options.run.csv_path = cli::output_path("hw2-p3.csv");
+  options.run.csv_path = cli::output_path(cli::program_name(argv[0]) + ".csv");
   cli::Program program;
   program.usage = &usage;
   const int code = cli::parse(argc, argv, 1, program, options);

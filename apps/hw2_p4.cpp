@@ -36,8 +36,9 @@ int usage(const char* program, int code) {
       << "  y    question v: move the tip 10 cm along Y0 (overhead lock)\n"
       << "  all  both (default)\n"
       << "  --duration  simulated seconds per run (default " << p4::kDuration << ", at most " << cli::kMaxDuration << ")\n"
-      << "Logs: out/hw2-p4-<z|y>.csv (your controller), out/hw2-p4-<z|y>-plain.csv in the repository;\n"
-      << "plots and a 3D replay page out/hw2-p4-<z|y>-* next to them (docs/visuals.md)\n"
+      << "Logs: out/" << cli::program_name(program) << "-<z|y>.csv (the controller), out/" << cli::program_name(program)
+      << "-<z|y>-plain.csv in the repository;\n"
+      << "plots and a 3D replay page out/" << cli::program_name(program) << "-<z|y>-* next to them (docs/visuals.md)\n"
       << "  --live      question v live in the browser toward z (or y if named first): drag the arm, switch to\n"
       << "              the plain law (docs/live.md); until Ctrl-C, or --duration. --port N: its port\n";
   return code;
@@ -167,7 +168,7 @@ int main(int argc, char** argv) {
     return cli::guarded(argv[0], [&] {
       const Target target = command.targets.front();
       opspace::live::P4Lab lab(target, &hw::control);
-      const std::string prefix = cli::output_path(std::string("hw2-p4-") + (target == Target::kAlongZ0 ? "z" : "y"));
+      const std::string prefix = cli::output_path(cli::program_name(argv[0]) + (target == Target::kAlongZ0 ? "-z" : "-y"));
       return cli::serve_live(
           lab, options, prefix,
           [&] { return p4::figures(target, lab.result(), lab.result()); },
@@ -187,7 +188,7 @@ int main(int argc, char** argv) {
     for (Target target : command.targets) {
       const std::string name = target == Target::kAlongZ0 ? "z" : "y";
       options.run.progress = &std::cerr;
-      const std::string prefix = cli::output_path("hw2-p4-" + name);
+      const std::string prefix = cli::output_path(cli::program_name(argv[0]) + "-" + name);
       options.run.csv_path = prefix + ".csv";
       const p4::Result mine = p4::run(target, &hw::control, options.run);
       options.run.csv_path = prefix + "-plain.csv";

@@ -21,10 +21,6 @@
 #include <opspace/hw2/p3.hpp>
 #include <opspace/hw2/p4.hpp>
 #include <opspace/scenarios.hpp>
-<<<<<<< HEAD
-#include <opspace/model/urdf.hpp>
-=======
->>>>>>> split
 
 #include "reference.hpp"
 

@@ -99,8 +99,9 @@ case "$mode" in
     need_gnuplot
     run "$program" --duration 1 --no-replay
     cd "$work"
-    check_plots out.txt out/hw2-p4-z reach torques torques-plain
-    check_plots out.txt out/hw2-p4-y reach torques torques-plain
+    # Named after the program: hw2-p4-sol's files never overwrite a student's hw2-p4 run.
+    check_plots out.txt "out/$(basename "$program")-z" reach torques torques-plain
+    check_plots out.txt "out/$(basename "$program")-y" reach torques torques-plain
     ;;
   no-gnuplot)
     (cd "$work" && OPSPACE_GNUPLOT=/nonexistent/gnuplot "$program" 1 --duration 1 --csv run/p1.csv --no-replay) \
@@ -192,15 +193,16 @@ case "$mode" in
     (cd "$work/elsewhere" && "$program" z --duration 0.2 --no-plots --no-replay) > "$work/out.txt" 2>&1 ||
       { cat "$work/out.txt"; fail "$program failed"; }
     cat "$work/out.txt"
-    grep -qx "  logs: $work/out/hw2-p4-z.csv, $work/out/hw2-p4-z-plain.csv" "$work/out.txt" ||
+    name=$(basename "$program")
+    grep -qx "  logs: $work/out/$name-z.csv, $work/out/$name-z-plain.csv" "$work/out.txt" ||
       fail "expected the logs in $work/out, printed as absolute paths"
-    [ -s "$work/out/hw2-p4-z.csv" ] || fail "$work/out/hw2-p4-z.csv was not written"
+    [ -s "$work/out/$name-z.csv" ] || fail "$work/out/$name-z.csv was not written"
     [ ! -e "$work/elsewhere/out" ] || fail "the program wrote into the directory it ran from"
     # From the folder holding out/: the short relative path.
     (cd "$work" && "$program" z --duration 0.2 --no-plots --no-replay) > "$work/out.txt" 2>&1 ||
       { cat "$work/out.txt"; fail "$program failed"; }
-    grep -qx "  logs: out/hw2-p4-z.csv, out/hw2-p4-z-plain.csv" "$work/out.txt" ||
-      { cat "$work/out.txt"; fail "expected the logs printed as out/hw2-p4-z.csv"; }
+    grep -qx "  logs: out/$name-z.csv, out/$name-z-plain.csv" "$work/out.txt" ||
+      { cat "$work/out.txt"; fail "expected the logs printed as out/$name-z.csv"; }
     ;;
   *) fail "unknown mode $mode" ;;
 esac
