@@ -11,6 +11,9 @@
 #include <vector>
 
 #include "opspace/hw2/p1b.hpp"
+#include "opspace/hw2/p2.hpp"
+#include "opspace/hw2/p3.hpp"
+#include "opspace/hw2/p4.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/live/labs.hpp"
@@ -38,30 +41,50 @@ std::string scratch(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("the live loop, unpaced and with no input, logs what the offline run logs") {
-  // The graded path is the offline run: the live lab must step the same closed loop. Its log
-  // is the offline log with the session's columns after it, row for row, digit for digit.
-  const double duration = 0.5;
-  const std::string offline = scratch("offline.csv"), live_csv = scratch("live.csv");
+// Runs `offline` (an offline run writing its log at the path it is given) and `lab` unpaced for
+// `duration` s, and checks that the live log is the offline log with the session's columns
+// after it, row for row, digit for digit.
+template <class Offline>
+void check_same_log(live::Lab& lab, Offline offline, double duration, const std::string& name) {
+  const std::string offline_csv = scratch(name + "-offline.csv"), live_csv = scratch(name + "-live.csv");
   scenarios::RunOptions options;
   options.duration = duration;
-  options.csv_path = offline;
-  const p1b::Result result = p1b::run(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control, options);
-  REQUIRE(result.failure.empty());
+  options.csv_path = offline_csv;
+  const std::size_t samples = offline(options);
   {
-    live::P1bLab lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
     live::Session session(lab, live_csv);
     live::run_unpaced(session, duration);
     CHECK(session.error().empty());
   }
-  const std::vector<std::string> a = lines_of(offline), b = lines_of(live_csv);
-  REQUIRE(a.size() == result.samples.size() + 1);  // the header and one row per millisecond
+  const std::vector<std::string> a = lines_of(offline_csv), b = lines_of(live_csv);
+  REQUIRE(a.size() == samples + 1);  // the header and one row per millisecond
   REQUIRE(b.size() == a.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
-    REQUIRE_MESSAGE(b[i].compare(0, a[i].size() + 1, a[i] + ",") == 0, "line " << i + 1 << "\noffline: " << a[i]
-                                                                              << "\nlive:    " << b[i]);
+    REQUIRE_MESSAGE(b[i].compare(0, a[i].size() + 1, a[i] + ",") == 0,
+                    name << ", line " << i + 1 << "\noffline: " << a[i] << "\nlive:    " << b[i]);
   }
   CHECK(b[0].substr(a[0].size()) == ",law,speed,push_body,push_fx,push_fy,push_fz,resets,kpx,kvx,kvj");
+}
+
+TEST_CASE("the live loop, unpaced and with no input, logs what the offline run logs") {
+  // The graded path is the offline run: the live lab must step the same closed loop, for every
+  // problem. 0.5 s: 500 ticks of each law, contact included for problem 3 (it touches at once).
+  live::P1bLab p1b_lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  check_same_log(p1b_lab, [](const scenarios::RunOptions& o) {
+    return p1b::run(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control, o).samples.size();
+  }, 0.5, "p1b");
+  live::P2Lab p2_lab(&hw2::p2::control, &hw2::p2::desired_acceleration);
+  check_same_log(p2_lab, [](const scenarios::RunOptions& o) {
+    return scenarios::p2::run(&hw2::p2::control, &hw2::p2::desired_acceleration, o).samples.size();
+  }, 0.5, "p2");
+  live::P3Lab p3_lab(&hw2::p3::control);
+  check_same_log(p3_lab, [](const scenarios::RunOptions& o) {
+    return scenarios::p3::run(&hw2::p3::control, o).samples.size();
+  }, 0.5, "p3");
+  live::P4Lab p4_lab(hw2::p4::Target::kAlongZ0, &hw2::p4::control);
+  check_same_log(p4_lab, [](const scenarios::RunOptions& o) {
+    return scenarios::p4::run(hw2::p4::Target::kAlongZ0, &hw2::p4::control, o).samples.size();
+  }, 0.5, "p4");
 }
 
 TEST_CASE("pause holds the time, reset returns to the start, the law and gains switch live") {
