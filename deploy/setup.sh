@@ -32,9 +32,10 @@ fi
 
 # --- 1. packages ------------------------------------------------------------------------------
 # The build's packages, less Google Benchmark (no benchmark is built here), plus TinyXML
-# (urdf.cpp's line numbers) and util-linux (runuser, for the lockdown proof). The names are the
-# same on Debian 12 and Ubuntu 22.04; on Ubuntu, doctest-dev, libbullet-dev, liburdfdom-dev and
-# nlohmann-json3-dev come from the "universe" component, which Ubuntu's images enable.
+# (the URDF loader's line numbers) and util-linux (runuser, for the lockdown proof). The names
+# are the same on Debian 12 and Ubuntu 22.04; on Ubuntu, doctest-dev, libbullet-dev,
+# liburdfdom-dev and nlohmann-json3-dev come from the "universe" component, which Ubuntu's images
+# enable.
 # shellcheck source=/dev/null
 source "$REPO/scripts/setup.sh"
 packages=(libtinyxml-dev util-linux)

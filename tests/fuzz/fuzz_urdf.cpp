@@ -1,5 +1,5 @@
-// libFuzzer target: parse_urdf() (lib/src/model/urdf.cpp: a markup scan, TinyXML, urdfdom, then our
-// checks) on arbitrary text. Each input must either give a Model whose every number is usable
+// libFuzzer target: parse_urdf() (lib/src/model/urdf*.cpp: a markup scan, TinyXML, urdfdom, then
+// our checks) on arbitrary text. Each input must either give a Model whose every number is usable
 // (check_model) or be refused with a UrdfError "fuzz.urdf:<line>: <cause>" or "fuzz.urdf:
 // <cause>" (a line of the input, no control character). Any other exception, a sanitizer
 // report, a NaN or an infinity in the Model (but the position limits of a continuous joint),

@@ -172,8 +172,8 @@ TEST_CASE("a joint without limits, as a continuous joint loads, survives the tex
 }
 
 TEST_CASE("a model text that the URDF loader could not have made is refused with its line") {
-  // Each edit breaks one rule that load_urdf enforces (lib/src/model/urdf.cpp) on the PP robot's d2
-  // (line 6), its first visual shape, or its base (line 4).
+  // Each edit breaks one rule that load_urdf enforces (lib/src/model/urdf_build.cpp) on the PP
+  // robot's d2 (line 6), its first visual shape, or its base (line 4).
   const Model pp = opspace::load_urdf(opspace::robot_path("pp.urdf"));
   const int visual_line = line_of(write_model_text(pp), "visual");
   using doctest::Contains;

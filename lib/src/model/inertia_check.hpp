@@ -1,5 +1,5 @@
 /// @file inertia_check.hpp
-/// What both readers of a Model (urdf.cpp, model_text.cpp) require of a body's rotational
+/// What both readers of a Model (urdf_build.cpp, model_text.cpp) require of a body's rotational
 /// inertia about its centre of mass.
 #pragma once
 

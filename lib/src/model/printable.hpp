@@ -1,4 +1,5 @@
-// `printable`: text from a file made safe to put in an error message (urdf.cpp, model_text.cpp).
+// `printable`: text from a file made safe to put in an error message (the URDF loader,
+// model_text.cpp).
 #pragma once
 
 #include <string>
