@@ -12,7 +12,12 @@
 //             the encoding of the frames (JSON) all happen on it
 //   server    CPU of all its other threads (cpp-httplib's: listening, streaming the frames,
 //             answering the commands), % of one core
-// from /proc/PID/task/*/stat (utime + stime) at the window's start and end, over its wall time.
+// from /proc/PID/task/*/stat (utime + stime) at the window's start and end, over its wall time;
+//   draws     the page's animation frames per second (requestAnimationFrame): below 60 the
+//             page's main thread, which also receives the frames, is busy drawing
+//   without the browser: the latency of the same gain commands sent by this script for 5 s
+//             after the window, following /events itself (the page still open): the program's
+//             share of the latency.
 // The 1-minute load average (/proc/loadavg) at the start and the end of each window is printed
 // too: the machine's other work competes with the program and with Chromium.
 // Run it from the build tree (it needs playwright-core, which the build's `npm ci` installs):
@@ -73,6 +78,49 @@ const quantile = (values, q) => {
 };
 const median = (values) => quantile(values, 0.5);
 
+/// Sends a gain command every PERIOD ms for `seconds` from this process (ids from 10^9, above
+/// the page's) and follows /events itself: the latencies from each POST to the first frame that
+/// applied it, without the browser.
+async function probeServer(url, gain, seconds) {
+  const controller = new AbortController();
+  const response = await fetch(`${url}events`, { signal: controller.signal });
+  const reader = response.body.getReader();
+  const decoder = new TextDecoder();
+  const waiting = new Map();  // id -> when sent
+  const latencies = [];
+  let buffer = '';
+  const reading = (async () => {
+    for (;;) {
+      const { value, done } = await reader.read().catch(() => ({ done: true }));
+      if (done) return;
+      const now = performance.now();
+      buffer += decoder.decode(value, { stream: true });
+      let cut;
+      while ((cut = buffer.indexOf('\n\n')) >= 0) {
+        const message = buffer.slice(0, cut);
+        buffer = buffer.slice(cut + 2);
+        if (!message.startsWith('data: ')) continue;
+        const m = message.match(/"command":(\d+)/);
+        if (!m) continue;
+        for (const [id, at] of waiting) if (id <= Number(m[1])) { latencies.push(now - at); waiting.delete(id); }
+      }
+    }
+  })();
+  const t0 = Date.now();
+  for (let k = 0; Date.now() - t0 < seconds * 1000; ++k) {
+    const id = 1e9 + k;
+    const value = k % 2 ? gain.value : Math.min(gain.max, gain.value + 0.2 * (gain.max - gain.min));
+    waiting.set(id, performance.now());
+    await fetch(`${url}command`, { method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ id, command: 'gain', name: gain.name, value }) });
+    await sleep(t0 + (k + 1) * PERIOD - Date.now());
+  }
+  await sleep(200);
+  controller.abort();
+  await reading;
+  return latencies;
+}
+
 async function bench(browser, [name, programArgs]) {
   const program = path.join(apps, name);
   const work = mkdtempSync(path.join(os.tmpdir(), 'opspace-bench-live-'));
@@ -105,6 +153,10 @@ async function bench(browser, [name, programArgs]) {
       api.benchRecord = record;
       api.benchLatencies = api.latencies.length;
       api.trace = { push: (f) => record.push([performance.now(), f.rtf, f.t, f.error]) };
+      const draws = [];  // the page's animation frames: how busy its main thread is
+      api.benchDraws = draws;
+      const loop = (t) => { draws.push(t); if (!api.benchStop) requestAnimationFrame(loop); };
+      requestAnimationFrame(loop);
     });
     const start = threads(child.pid);
     const loadStart = load();
@@ -141,8 +193,11 @@ async function bench(browser, [name, programArgs]) {
     const loadEnd = load();
     const page_ = await page.evaluate(() => {
       const api = window.opspaceLive;
-      return { record: api.benchRecord, latencies: api.latencies.slice(api.benchLatencies), errors: api.commandErrors };
+      api.benchStop = true;
+      return { record: api.benchRecord, latencies: api.latencies.slice(api.benchLatencies), errors: api.commandErrors, draws: api.benchDraws };
     });
+    // The program's share of the latency: the same commands from this process, the page still open.
+    const probe = gain ? await probeServer(url, gain, 5) : [];
     const record = page_.record;
     const from = record.length ? record[0][0] : 0;
     const rtfs = record.map((r) => r[1]);
@@ -159,7 +214,9 @@ async function bench(browser, [name, programArgs]) {
       rtfMedian: median(rtfs), rtfMin: settled.length ? Math.min(...settled) : NaN,
       latencyMedian: median(page_.latencies), latencyP95: quantile(page_.latencies, 0.95),
       latencyMax: page_.latencies.length ? Math.max(...page_.latencies) : NaN,
-      fps: record.length / wall, mainPercent: (100 * main) / wall, serverPercent: (100 * others) / wall,
+      fps: record.length / wall, draws: page_.draws.length / wall,
+      drawGapP95: quantile(page_.draws.slice(1).map((t, i) => t - page_.draws[i]), 0.95),
+      probeMedian: median(probe), probeP95: quantile(probe, 0.95), mainPercent: (100 * main) / wall, serverPercent: (100 * others) / wall,
       threads: perThread.sort((a, b) => b.percent - a.percent).slice(0, 6),
       refused: page_.errors.length, refusedFirst: page_.errors[0] || '',
       runError: record.map((r) => r[3]).find((e) => e) || '',
@@ -200,12 +257,13 @@ try {
 }
 
 const f = (v, d = 1) => (Number.isFinite(v) ? v.toFixed(d) : '-');
-console.log('\n| program | load (1 min) | rtf median | rtf min | latency median | latency p95 | fps | main thread | server threads |');
-console.log('|---|---|---|---|---|---|---|---|---|');
+console.log('\n| program | load (1 min) | rtf median | rtf min | latency median | latency p95 | fps | main thread | server threads | page draws/s | without the browser: median, p95 |');
+console.log('|---|---|---|---|---|---|---|---|---|---|---|');
 for (const r of results) {
   if (r.failed) { console.log(`| ${r.program} | failed: ${r.failed} |`); continue; }
   console.log(`| ${r.program} | ${f(r.loadStart, 2)} -> ${f(r.loadEnd, 2)} | ${f(r.rtfMedian, 2)} | ${f(r.rtfMin, 2)} | ` +
-    `${f(r.latencyMedian)} ms | ${f(r.latencyP95)} ms | ${f(r.fps)} | ${f(r.mainPercent)} % | ${f(r.serverPercent)} % |`);
+    `${f(r.latencyMedian)} ms | ${f(r.latencyP95)} ms | ${f(r.fps)} | ${f(r.mainPercent)} % | ${f(r.serverPercent)} % | ` +
+    `${f(r.draws)} | ${f(r.probeMedian)} ms, ${f(r.probeP95)} ms |`);
 }
 if (jsonOut) writeFileSync(jsonOut, JSON.stringify(results, null, 1));
 process.exit(results.some((r) => r.failed) ? 1 : 0);
