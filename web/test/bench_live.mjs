@@ -1,8 +1,8 @@
 // The live lab's benchmark (issue 32's goals; the results are in docs/performance.md, "The live
 // lab"). For each problem's solution program it starts `PROGRAM ARG... --live --port 0`, opens
-// the page in headless Chromium (1280x720) and, for SECONDS (15), sends a command every 200 ms
-// as a person would: a gain moved back and forth, and a drag (a push on a link whose mouse point
-// circles for 0.6 s, then a release; every 2 s). Then it prints, per program:
+// the page in headless Chromium (1280x720) and, for SECONDS (15), sends a command about every
+// 200 ms as a person would: a gain moved back and forth, and a drag (a push on a link whose
+// mouse point circles for 0.6 s, then a release; every 2 s). Then it prints, per program:
 //   rtf       the real-time factor in the frames (frame.rtf: simulated over wall seconds in the
 //             program's last half second): median, and min after the window's first second
 //   latency   from a POST /command to the first frame that applied it, measured by the page
@@ -40,6 +40,10 @@ if (!apps) {
 }
 const SECONDS = Number(secondsArg || 15);
 const PERIOD = 200;  // ms between commands
+// Up to a frame period (1/60 s) added at random to each send time: with exactly 200 ms, 12 frame
+// periods, every command would come at the same point of the frame cycle, and the latencies
+// would all be alike, by chance short or long.
+const jitter = () => Math.random() * 1000 / 60;
 const PROGRAMS = [
   ['hw2-p1-sol', ['3']], ['hw2-p2-sol', []], ['hw2-p3-sol', []], ['hw2-p4-sol', ['z']],
 ];
@@ -113,7 +117,7 @@ async function probeServer(url, gain, seconds) {
     waiting.set(id, performance.now());
     await fetch(`${url}command`, { method: 'POST', headers: { 'Content-Type': 'application/json' },
       body: JSON.stringify({ id, command: 'gain', name: gain.name, value }) });
-    await sleep(t0 + (k + 1) * PERIOD - Date.now());
+    await sleep(t0 + (k + 1) * PERIOD + jitter() - Date.now());
   }
   await sleep(200);
   controller.abort();
@@ -185,7 +189,7 @@ async function bench(browser, [name, programArgs]) {
       }
       await page.evaluate((c) => window.opspaceLive.send(c), command);
       ++sent;
-      await sleep(t0 + (k + 1) * PERIOD - Date.now());
+      await sleep(t0 + (k + 1) * PERIOD + jitter() - Date.now());
     }
     await page.evaluate(() => window.opspaceLive.send({ command: 'release' }));
     const wall = (Date.now() - t0) / 1000;
