@@ -140,8 +140,10 @@ LiveReport serve(Lab& lab, const LiveOptions& options, std::ostream& out) {
   long resets = session.resets();
 
   while (!g_stop) {
-    session.apply_queued();
+    // A command's effect goes out at once, not at the next frame time: the page's latency.
+    const bool commanded = session.apply_queued() > 0;
     const Clock::time_point now = Clock::now();
+    if (commanded) next_frame = now;
     const double elapsed = std::chrono::duration<double>(now - last).count();
     last = now;
     if (session.resets() != resets) {  // a reset: the clock starts again with the run

@@ -53,13 +53,14 @@ void Session::submit(std::string_view body) {
   queue_.push_back(c);
 }
 
-void Session::apply_queued() {
+int Session::apply_queued() {
   std::vector<Command> commands;
   {
     const std::lock_guard<std::mutex> lock(queue_mutex_);
     commands.swap(queue_);
   }
   for (const Command& c : commands) apply(c);
+  return static_cast<int>(commands.size());
 }
 
 void Session::apply(const Command& c) {

@@ -30,8 +30,9 @@ class Session {
 
   /// Reads `body` (POST /command) and queues it: any thread. Throws CommandError.
   void submit(std::string_view body);
-  /// Applies the queued commands, in order: the simulation thread, between steps.
-  void apply_queued();
+  /// Applies the queued commands, in order: the simulation thread, between steps. Returns how
+  /// many it applied.
+  int apply_queued();
   /// Applies one command now.
   void apply(const Command& command);
 
