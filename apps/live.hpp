@@ -21,6 +21,7 @@ int serve_live(Lab& lab, const Options& options, const std::string& prefix, Figu
   live.port = options.port;
   live.duration = options.duration_given ? options.run.duration : 0.0;
   live.csv_path = prefix + "-live.csv";
+  live.watchdog = options.run.watchdog;
   const opspace::live::LiveReport report = opspace::live::serve(lab, live, std::cout);
   std::cout << "\nlive run ended: " << report.steps << " steps in " << report.wall_seconds << " s of wall time, "
             << report.frames << " frames sent, " << report.resyncs << " resynchronisations (a step that fell "

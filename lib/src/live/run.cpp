@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "opspace/live/server.hpp"
+#include "opspace/scenarios/watchdog.hpp"
 #include "opspace/visuals/replay.hpp"
 
 namespace opspace::live {
@@ -138,8 +139,10 @@ LiveReport serve(Lab& lab, const LiveOptions& options, std::ostream& out) {
   Clock::time_point window_start = start;
   double window_sim = session.time(), rtf = 0.0;
   long resets = session.resets();
+  scenarios::Watchdog watchdog(options.watchdog, lab.info().program + " --live, the controller");
 
   while (!g_stop) {
+    watchdog.beat(session.time());
     // A command's effect goes out at once, not at the next frame time: the page's latency.
     const bool commanded = session.apply_queued() > 0;
     const Clock::time_point now = Clock::now();

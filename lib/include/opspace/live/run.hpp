@@ -22,6 +22,11 @@ struct LiveOptions {
   /// Lag (wall seconds) after which the pacing gives up catching up and resynchronises,
   /// instead of running a burst of steps.
   double max_lag = 0.1;
+  /// Wall seconds a loop iteration (a controller's tick among them) may take before the program
+  /// is stopped with a message naming the hang (scenarios/watchdog.hpp; scripts/run sets it from
+  /// OPSPACE_WATCHDOG); 0: no watchdog. A controller caught in an endless loop never returns, so
+  /// the run cannot be reset: the program ends, and the page says it stopped.
+  double watchdog = 0.0;
 };
 
 /// The bundled page script: $OPSPACE_LIVE_VIEWER if set, else the one CMake built
