@@ -64,7 +64,7 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
       return program.usage(argv[0], 2);
     }
   }
-  if (options.port != 0 && !options.live) return bad(argv[0], "--port applies to --live only");
+  if (options.port != 0 && !options.live) return bad(argv[0], "'--port' applies to --live only (add --live)");
   return -1;
 }
 

@@ -146,3 +146,22 @@ TEST_CASE("hw2-p4 runs z, y or both, the last choice counting, and takes no --cs
   CHECK(o.code == 2);
   CHECK(o.err == "hw2-p4: unknown argument '--csv'\nusage: hw2-p4\n");
 }
+
+TEST_CASE("--live takes --port, a port number, and --port alone is refused by name") {
+  // The fuzz target (tests/fuzz/fuzz_cli.cpp) found the first message without its quotes.
+  cli::Options options;
+  CHECK(p2({"hw2-p2", "--live", "--port", "8080"}, options).code == -1);
+  CHECK(options.live);
+  CHECK(options.port == 8080);
+  cli::Options plain;
+  const Outcome alone = p2({"hw2-p2", "--port", "8080"}, plain);
+  CHECK(alone.code == 2);
+  CHECK(alone.err == "hw2-p2: '--port' applies to --live only (add --live)\n");
+  for (const char* value : {"-1", "65536", "80x", ""}) {
+    CAPTURE(value);
+    cli::Options o;
+    const Outcome bad = p2({"hw2-p2", "--live", "--port", value}, o);
+    CHECK(bad.code == 2);
+    CHECK(bad.err == "hw2-p2: --port needs a port number from 0 (any free port) to 65535, not '" + std::string(value) + "'\n");
+  }
+}
