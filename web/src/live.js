@@ -37,9 +37,15 @@ function main() {
 
   // The loop: the latest frame, drawn once per animation frame.
   let framed = false, lastPlotDraw = 0;
+  // Drawing keeps the page's thread at most half busy: where a draw is slow (software WebGL,
+  // 25-30 ms), a frame from the program that arrives mid-draw waits for it, which is the
+  // command latency the page measures; with a GPU a draw takes a millisecond and nothing is
+  // skipped. A scene that did not change is not drawn again.
+  let lastDrawEnd = -Infinity, drawCost = 0, changed = true;
   function tick(now) {
     if (stream.fresh && api.lastFrame) {
       stream.fresh = false;
+      changed = true;
       view.shown = api.lastFrame;
       view.show(view.shown);
       controls.show(view.shown);
@@ -59,8 +65,14 @@ function main() {
       plots.draw(api.lastFrame ? api.lastFrame.t : 0);
     }
     stream.count(now);
-    view.controls.update();
-    view.render();
+    if (view.controls.update()) changed = true;
+    if (changed && now - lastDrawEnd >= drawCost) {  // idle as long as the last draw took
+      const start = performance.now();
+      view.render();
+      lastDrawEnd = performance.now();
+      drawCost = lastDrawEnd - start;
+      changed = false;
+    }
     if (!api.stopped) view.placePushLabel(api.lastFrame);
     requestAnimationFrame(tick);
   }
