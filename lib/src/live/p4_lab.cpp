@@ -28,27 +28,29 @@ void P4Lab::reset() {
   LoopLab::reset();
 }
 
+void P4Lab::use_law(p4::Loop& loop) const {
+  if (plain_) {
+    loop.law = &p4::plain_control;
+    loop.who = "the plain controller";
+    return;
+  }
+  const p4::Controller control = control_;
+  const Target target = target_;
+  loop.law = [control, target](const hw2::p4::State& s, const TaskSpace&, const hw2::p4::Goal& g) {
+    return control(target, s, g);
+  };
+  loop.who = "your controller " + p4::describe(target_);
+}
+
 std::unique_ptr<p4::Loop> P4Lab::make_loop() const {
   auto loop = std::make_unique<p4::Loop>(target_, nullptr, "");
-  if (plain_) {
-    loop->law = &p4::plain_control;
-    loop->who = "the plain controller";
-  } else {
-    const p4::Controller control = control_;
-    const Target target = target_;
-    loop->law = [control, target](const hw2::p4::State& s, const TaskSpace&, const hw2::p4::Goal& g) {
-      return control(target, s, g);
-    };
-    loop->who = "your controller " + p4::describe(target_);
-  }
+  use_law(*loop);
   return loop;
 }
 
 void P4Lab::set_law(int law) {
   plain_ = law == 1;
-  const std::unique_ptr<p4::Loop> fresh = make_loop();  // the law and its name, on the running loop
-  loop_->law = fresh->law;
-  loop_->who = fresh->who;
+  use_law(*loop_);  // on the running loop: no new world is built
 }
 
 void P4Lab::plot_values(std::vector<double>& values) const {

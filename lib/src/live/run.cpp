@@ -69,7 +69,7 @@ std::string viewer_path() {
   return OPSPACE_LIVE_VIEWER;
 }
 
-std::string page(Lab& lab) {
+std::string page(Lab& lab, double max_force) {
   const LabInfo& info = lab.info();
   Json data = robot_json(lab);
   data["title"] = info.title;
@@ -94,7 +94,7 @@ std::string page(Lab& lab) {
     markers.push_back(Json{{"name", m.name}, {"label", m.label}, {"color", m.color}, {"radius", m.radius}});
   }
   data["markers"] = markers;
-  data["max_force"] = LiveOptions{}.spring.max_force;
+  data["max_force"] = max_force;
   data["dt"] = lab.simulation().settings().dt;
   data["window"] = info.window;
 
@@ -121,7 +121,7 @@ void run_unpaced(Session& session, double duration) {
 
 LiveReport serve(Lab& lab, const LiveOptions& options, std::ostream& out) {
   Session session(lab, options.csv_path, options.spring);
-  Server server(page(lab), options.port, [&session](std::string_view body) { session.submit(body); });
+  Server server(page(lab, options.spring.max_force), options.port, [&session](std::string_view body) { session.submit(body); });
   const StopOnSignal signals;
   out << "live: http://127.0.0.1:" << server.port() << "/" << std::endl;
   out << "  open it in a browser (a forwarded port in the devcontainer); Ctrl-C ends the run" << std::endl;

@@ -75,6 +75,7 @@ class P4Lab final : public LoopLab<scenarios::p4::Loop, scenarios::p4::Result> {
 
  private:
   std::unique_ptr<scenarios::p4::Loop> make_loop() const override;
+  void use_law(scenarios::p4::Loop& loop) const;  // the law plain_ names, and its name in errors
   hw2::p4::Target target_;
   scenarios::p4::Controller control_;
   bool plain_ = false;

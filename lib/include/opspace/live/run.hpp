@@ -33,9 +33,10 @@ struct LiveOptions {
 /// (build/PRESET/web/opspace-live.js).
 std::string viewer_path();
 
-/// The page of `lab`: its description (docs/live.md#protocol) and the viewer, inlined; a page
-/// that says what is missing when the viewer was not built.
-std::string page(Lab& lab);
+/// The page of `lab`, whose pushes are clamped to `max_force` (N): its description
+/// (docs/live.md#protocol) and the viewer, inlined; a page that says what is missing when the
+/// viewer was not built.
+std::string page(Lab& lab, double max_force);
 
 /// What a paced run measured, for the terminal's summary.
 struct LiveReport {
