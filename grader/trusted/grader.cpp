@@ -45,29 +45,6 @@ constexpr double kDefaultTimeout = 30.0;
 const std::vector<std::string> kRunnerEnv = {};
 #endif
 
-int usage(std::ostream& out, const char* program, int code) {
-  out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout SECONDS] [--seed N]\n"
-      << "          [--gradescope FILE] [--junit FILE] [--hidden TEXT]... [--sandbox-user NAME] [--no-isolation]\n"
-      << "  --problem      grade one problem only (";
-  bool first = true;
-  for (const Problem& p : graded_suite()) {
-    out << (first ? "" : ", ") << p.key;
-    first = false;
-  }
-  out << ")\n"
-      << "  --exercises    the folder holding p1a.cpp ... p4.cpp (default: this repository's)\n"
-      << "  --timeout      time limit of each test, in seconds (default " << kDefaultTimeout << ")\n"
-      << "  --seed         replay the random inputs of an earlier run (its report prints the seed)\n"
-      << "  --gradescope   also write Gradescope's results.json to FILE\n"
-      << "  --junit        also write JUnit XML to FILE\n"
-      << "  --hidden       mark the tests whose name contains TEXT hidden in results.json\n"
-      << "  --sandbox-user when run as root: the unprivileged user that runs student code\n"
-      << "                 (default: opspace-runner if it exists, else nobody)\n"
-      << "  --no-isolation run the student's code without the sandbox (debugging only)\n"
-      << "Exit code 0 whenever grading ran, whatever the score.\n";
-  return code;
-}
-
 // Writes through a temporary file and a rename: a reader sees the old file or the whole new one.
 template <typename Writer>
 bool write_file(const std::string& path, const char* what, Writer writer) {
@@ -182,7 +159,7 @@ ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, co
   ProblemResult out;
   out.problem = &problem;
   const std::vector<Mistake> catalogue = mistakes(problem.key);
-  out.results = run_tests(problem.tests, api, &runner, options.timeout, &catalogue);
+  out.results = run_tests(problem.tests, api, &runner, timeout_of(options, problem.key), &catalogue);
   runner.stop();
   for (const TestResult& r : out.results) {
     out.score += r.score;
@@ -197,54 +174,6 @@ ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, co
   return out;
 }
 
-bool parse(int argc, char** argv, GraderOptions& options, int& exit_code) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (arg == "--help" || arg == "-h") {
-      exit_code = usage(std::cout, argv[0], 0);
-      return false;
-    }
-    if (arg == "--problem" && has_value) {
-      options.only_problem = argv[++i];
-    } else if (arg == "--exercises" && has_value) {
-      options.exercises = argv[++i];
-    } else if (arg == "--timeout" && has_value) {
-      char* end = nullptr;
-      options.timeout = std::strtod(argv[++i], &end);
-      if (*end != '\0' || !(options.timeout > 0.0) || options.timeout > 86400.0) {
-        std::cerr << argv[0] << ": --timeout needs a number of seconds between 0 and 86400\n";
-        exit_code = 2;
-        return false;
-      }
-    } else if (arg == "--seed" && has_value) {
-      char* end = nullptr;
-      const std::string text = argv[++i];
-      options.seed = std::strtoull(text.c_str(), &end, 10);
-      if (text.empty() || *end != '\0' || text[0] == '-' || options.seed == 0) {
-        std::cerr << argv[0] << ": --seed needs a positive whole number\n";
-        exit_code = 2;
-        return false;
-      }
-    } else if (arg == "--gradescope" && has_value) {
-      options.gradescope_path = argv[++i];
-    } else if (arg == "--junit" && has_value) {
-      options.junit_path = argv[++i];
-    } else if (arg == "--hidden" && has_value) {
-      options.hidden.push_back(argv[++i]);
-    } else if (arg == "--sandbox-user" && has_value) {
-      options.user = argv[++i];
-    } else if (arg == "--no-isolation") {
-      options.isolate = false;
-    } else {
-      std::cerr << argv[0] << ": unknown or incomplete argument '" << arg << "'\n";
-      exit_code = usage(std::cerr, argv[0], 2);
-      return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 int grader_main(int argc, char** argv, const std::string& default_exercises) {
@@ -252,7 +181,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   options.exercises = default_exercises;
   options.timeout = kDefaultTimeout;
   int exit_code = 0;
-  if (!parse(argc, argv, options, exit_code)) return exit_code;
+  if (!parse_grader_options(argc, argv, options, exit_code)) return exit_code;
   if (!options.isolate && geteuid() == 0) {
     std::cerr << argv[0] << ": --no-isolation would run a student's code as root: refused\n";
     return 2;
@@ -272,7 +201,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     if (options.only_problem.empty() || problem.key == options.only_problem) chosen.push_back(&problem);
   if (chosen.empty()) {
     std::cerr << argv[0] << ": no problem '" << options.only_problem << "'\n";
-    return usage(std::cerr, argv[0], 2);
+    return grader_usage(std::cerr, argv[0], kDefaultTimeout, 2);
   }
 
   Toolchain toolchain;

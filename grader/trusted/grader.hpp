@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@ struct GraderOptions {
   std::string only_problem;         ///< empty: every problem
   std::string exercises;            ///< the folder of p1a.cpp ... p4.cpp to grade
   double timeout = 30.0;            ///< seconds per test for every request to the runner
+  std::map<std::string, double> problem_timeout;  ///< a problem's own limit (--timeout KEY=SECONDS)
   std::string gradescope_path;      ///< results.json, if not empty
   std::string junit_path;           ///< JUnit XML, if not empty
   std::vector<std::string> hidden;  ///< tests whose name contains one of these are hidden
@@ -26,6 +28,17 @@ struct GraderOptions {
   std::uint64_t seed = 0;           ///< random inputs; 0: draw a new seed
   std::string user;                 ///< when root: the user that runs student code
 };
+
+/// Reads hw2-grade's command line into `options` (whose timeout is the default on entry).
+/// Returns false when the program should exit with `exit_code` (--help: 0, a bad option: 2,
+/// with the reason on stderr).
+bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& exit_code);
+
+/// The usage text; returns `code`.
+int grader_usage(std::ostream& out, const char* program, double default_timeout, int code);
+
+/// The time limit of each test of problem `key`: its own (--timeout KEY=SECONDS), else --timeout's.
+double timeout_of(const GraderOptions& options, const std::string& key);
 
 /// Gradescope's results.json: score, max_score, execution_time, output, and tests[] with
 /// name, score, max_score, status, output and visibility ("hidden" when the test's name

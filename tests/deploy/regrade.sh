@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # scripts/regrade on three students, two at a time: alice (the untouched stubs), bob (the
 # reference, in a subfolder), carol (the reference, but 1a's mass_matrix spins forever). The
-# grader's per-test limit (--timeout 60: over a hundred times the longest reference test; 20 s
-# was once too short for the reference's problem 3, in the fresh-Debian check at nice 19 beside
-# CI) stops the two tests of 1a that call mass_matrix (ii, 3 points; vi's split, 2 points: the
-# reference's split_displacement calls its own mass_matrix) while alice and bob are graded. The
-# gradebook has alice 0, bob full marks, carol 1a = 23 - 5 = 18 and the rest full. Then carol
-# alone with --limit 6: the watchdog stops her whole grading, and her row and results.json say
-# so.
+# grader's per-test limit is 60 s (--timeout 60: over a hundred times the longest reference test;
+# 20 s was once too short for the reference's problem 3, in the fresh-Debian check at nice 19
+# beside CI) and problem 1a's own is 5 s (--timeout 1a=5: 1a's tests are a few 2x2 products, a
+# millisecond each); it stops the two tests of 1a that call mass_matrix (ii, 3 points; vi's
+# split, 2 points: the reference's split_displacement calls its own mass_matrix) while alice and
+# bob are graded. The gradebook has alice 0, bob full marks, carol 1a = 23 - 5 = 18 and the rest
+# full. Then carol alone with --limit 6: the watchdog stops her whole grading, and her row and
+# results.json say so.
 #   bash tests/deploy/regrade.sh REPO WORK
 set -euo pipefail
 repo=$1 work=$2
@@ -27,7 +28,7 @@ grep -q 'volatile unsigned long spin' "$work/in/carol/p1a.cpp" || { echo "soluti
 cp "$work"/in/carol/* "$work/in2/carol/"
 
 start=$(date +%s)
-bash "$repo/scripts/regrade" "$work/in" "$work/out" --jobs 2 -- --timeout 60 2> "$work/regrade.err"
+bash "$repo/scripts/regrade" "$work/in" "$work/out" --jobs 2 -- --timeout 60 --timeout 1a=5 2> "$work/regrade.err"
 cat "$work/regrade.err"
 echo "regrade of 3 students: $(( $(date +%s) - start )) s"
 grep -q 'regrade: 3/3 done' "$work/regrade.err" || { echo "no progress line"; exit 1; }
@@ -42,7 +43,7 @@ for s in alice bob carol; do
 done
 cmake -DJSON="$work/out/bob/results.json" "-DFULL=1a;1b;2;3;4" "-DOUTPUT=found in the folder 'hw2'" -P "$check"
 cmake -DJSON="$work/out/carol/results.json" "-DFULL=1b;2;3;4" -P "$check"
-grep -q 'did not answer within 60 s' "$work/out/carol/report.txt" || { echo "carol's report does not say she hung"; exit 1; }
+grep -q 'did not answer within 5 s' "$work/out/carol/report.txt" || { echo "carol's report does not say she hung (within 1a's 5 s)"; exit 1; }
 
 bash "$repo/scripts/regrade" "$work/in2" "$work/out2" --jobs 1 --limit 6 -- --timeout 30 2> "$work/regrade2.err"
 cat "$work/out2/gradebook.csv"

@@ -1,0 +1,117 @@
+// hw2-grade's command line (docs/grader.md): the options, their checks and the usage text.
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "grader.hpp"
+#include "suite.hpp"
+
+namespace opspace::grading {
+
+namespace {
+
+bool is_problem(const std::string& key) {
+  for (const Problem& p : graded_suite())
+    if (p.key == key) return true;
+  return false;
+}
+
+// "SECONDS" or "KEY=SECONDS": sets the limit of every test, or of problem KEY's tests.
+bool parse_timeout(const std::string& text, GraderOptions& options, const char* program) {
+  const std::size_t equals = text.find('=');
+  const std::string key = equals == std::string::npos ? "" : text.substr(0, equals);
+  const std::string number = equals == std::string::npos ? text : text.substr(equals + 1);
+  if (equals != std::string::npos && !is_problem(key)) {
+    std::cerr << program << ": --timeout " << text << ": no problem '" << key << "' (--help lists the keys)\n";
+    return false;
+  }
+  char* end = nullptr;
+  const double seconds = std::strtod(number.c_str(), &end);
+  if (number.empty() || *end != '\0' || !(seconds > 0.0) || seconds > 86400.0) {
+    std::cerr << program << ": --timeout needs a number of seconds between 0 and 86400, or KEY=SECONDS, not '"
+              << text << "'\n";
+    return false;
+  }
+  if (key.empty()) options.timeout = seconds;
+  else options.problem_timeout[key] = seconds;
+  return true;
+}
+
+}  // namespace
+
+int grader_usage(std::ostream& out, const char* program, double default_timeout, int code) {
+  out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
+      << "          [--gradescope FILE] [--junit FILE] [--hidden TEXT]... [--sandbox-user NAME] [--no-isolation]\n"
+      << "  --problem      grade one problem only (";
+  bool first = true;
+  for (const Problem& p : graded_suite()) {
+    out << (first ? "" : ", ") << p.key;
+    first = false;
+  }
+  out << ")\n"
+      << "  --exercises    the folder holding p1a.cpp ... p4.cpp (default: this repository's)\n"
+      << "  --timeout      time limit of each test, in seconds (default " << default_timeout << ");\n"
+      << "                 KEY=SECONDS sets problem KEY's alone (repeatable)\n"
+      << "  --seed         replay the random inputs of an earlier run (its report prints the seed)\n"
+      << "  --gradescope   also write Gradescope's results.json to FILE\n"
+      << "  --junit        also write JUnit XML to FILE\n"
+      << "  --hidden       mark the tests whose name contains TEXT hidden in results.json\n"
+      << "  --sandbox-user when run as root: the unprivileged user that runs student code\n"
+      << "                 (default: opspace-runner if it exists, else nobody)\n"
+      << "  --no-isolation run the student's code without the sandbox (debugging only)\n"
+      << "Exit code 0 whenever grading ran, whatever the score.\n";
+  return code;
+}
+
+double timeout_of(const GraderOptions& options, const std::string& key) {
+  const auto found = options.problem_timeout.find(key);
+  return found == options.problem_timeout.end() ? options.timeout : found->second;
+}
+
+bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& exit_code) {
+  const double default_timeout = options.timeout;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--help" || arg == "-h") {
+      exit_code = grader_usage(std::cout, argv[0], default_timeout, 0);
+      return false;
+    }
+    if (arg == "--problem" && has_value) {
+      options.only_problem = argv[++i];
+    } else if (arg == "--exercises" && has_value) {
+      options.exercises = argv[++i];
+    } else if (arg == "--timeout" && has_value) {
+      if (!parse_timeout(argv[++i], options, argv[0])) {
+        exit_code = 2;
+        return false;
+      }
+    } else if (arg == "--seed" && has_value) {
+      char* end = nullptr;
+      const std::string text = argv[++i];
+      options.seed = std::strtoull(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || text[0] == '-' || options.seed == 0) {
+        std::cerr << argv[0] << ": --seed needs a positive whole number\n";
+        exit_code = 2;
+        return false;
+      }
+    } else if (arg == "--gradescope" && has_value) {
+      options.gradescope_path = argv[++i];
+    } else if (arg == "--junit" && has_value) {
+      options.junit_path = argv[++i];
+    } else if (arg == "--hidden" && has_value) {
+      options.hidden.push_back(argv[++i]);
+    } else if (arg == "--sandbox-user" && has_value) {
+      options.user = argv[++i];
+    } else if (arg == "--no-isolation") {
+      options.isolate = false;
+    } else {
+      std::cerr << argv[0] << ": unknown or incomplete argument '" << arg << "'\n";
+      exit_code = grader_usage(std::cerr, argv[0], default_timeout, 2);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace opspace::grading
