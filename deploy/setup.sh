@@ -82,9 +82,11 @@ fi
 
 # --- 4. prove the build -----------------------------------------------------------------------
 # The reference earns full marks, the stubs 0, each mutant loses its tests, and each tamper case
-# earns no more than its honest share, all on this machine, with its kernel and container.
+# earns no more than its honest share, all on this machine, with its kernel and container. Twice
+# as many at once as there are cores: a tamper case spends most of its time in the 4 s pause that
+# lets anything a submission left behind act (tests/tamper/run_case.cmake).
 say "proving the build: ctest -R '^(graded|grader|tamper): '"
-ctest --test-dir "$BUILD" -R '^(graded|grader|tamper): ' --parallel "$jobs" --output-on-failure > "$ROOT/setup-proof.log" 2>&1 ||
+ctest --test-dir "$BUILD" -R '^(graded|grader|tamper): ' --parallel "$((2 * jobs))" --output-on-failure > "$ROOT/setup-proof.log" 2>&1 ||
   { grep -E 'tests passed|Failed|\*\*\*' "$ROOT/setup-proof.log" | tail -30; fail "the proof failed (log: $ROOT/setup-proof.log)"; }
 grep -E 'tests passed|Skipped|SKIPPED' "$ROOT/setup-proof.log" || true
 

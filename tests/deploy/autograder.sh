@@ -14,7 +14,13 @@
 # store: what it still proves is that the bundle holds everything the grader needs and that
 # setup.sh configures, builds, proves and locks it down; that the sources compile, the build of
 # this tree proves. Without ccache it compiles everything.
-#   bash tests/deploy/autograder.sh REPO WORK
+# One image per bundle: the set-up ROOT lives in IMAGES/<fingerprint> (default
+# REPO/build/autograder-images), the fingerprint being the SHA-256 of every file of the zip with
+# its path and mode. A second run with the identical bundle (CI's sanitized suite after the release suite,
+# in the same clone) reuses that image, which setup.sh built, proved and locked down in the first
+# run, and grades every submission again; any change to a file of the bundle, setup.sh and the
+# grader options included, makes a new image. AUTOGRADER_TEST_FRESH=1 sets up anew regardless.
+#   bash tests/deploy/autograder.sh REPO WORK [IMAGES]
 set -euo pipefail
 repo=$1 work=$2
 if command -v ccache > /dev/null 2>&1; then
@@ -26,26 +32,33 @@ if command -v ccache > /dev/null 2>&1; then
 fi
 check="$repo/tests/deploy/check_json.cmake"
 seconds() { echo $(( $(date +%s) - $1 )); }
-root="$work/root"
+images=${3:-$repo/build/autograder-images}
 options=(--hidden "in simulation")  # grader options pass through the bundle
-if [ "${AUTOGRADER_TEST_REUSE:-}" = 1 ] && [ -f "$root/setup-done" ]; then
-  # A developer's shortcut: the submissions again, on the image an earlier run set up.
-  echo "AUTOGRADER_TEST_REUSE=1: reusing $root (no new bundle, no setup.sh)"
-  printf '%s\n' "${options[@]}" > "$root/source/opspace/deploy/grader-options"
+rm -rf "$work"
+mkdir -p "$work" "$images"
+exec 9> "$images/lock"
+flock 9  # one run at a time sets up or uses an image
+bash "$repo/scripts/autograder" "$work/bundle" -- "${options[@]}"
+mkdir -p "$work/unzipped"
+(cd "$work/unzipped" && cmake -E tar xf "$work/bundle/autograder.zip")
+fingerprint=$(cd "$work/unzipped" && { find . -type f -printf '%m %p\n' | LC_ALL=C sort
+  find . -type f -print0 | LC_ALL=C sort -z | xargs -0 sha256sum; } | sha256sum | cut -c1-16)
+root="$images/$fingerprint"
+if [ "${AUTOGRADER_TEST_FRESH:-}" != 1 ] && [ -f "$root/setup-done" ]; then
+  echo "the identical bundle (fingerprint $fingerprint) was set up, proved and locked down by setup.sh at $(cat "$root/setup-done"): grading on that image"
 else
-  rm -rf "$work"
-  mkdir -p "$work"
-  bash "$repo/scripts/autograder" "$work/bundle" -- "${options[@]}"
-  mkdir -p "$root/source"
-  (cd "$root/source" && cmake -E tar xf "$work/bundle/autograder.zip")
+  rm -rf "$images"/*/  # an image of an older bundle proves nothing about this one
+  mkdir -p "$root"
+  mv "$work/unzipped" "$root/source"
   [ -x "$root/source/run_autograder" ] && [ -f "$root/source/setup.sh" ] ||
     { echo "setup.sh and an executable run_autograder must be at the top of the zip"; exit 1; }
   cp "$root/source/run_autograder" "$root/source/setup.sh" "$root/"
   start=$(date +%s)
   (cd "$root/source" && AUTOGRADER_ROOT="$root" bash ./setup.sh)
   echo "TIME setup.sh: $(seconds "$start") s (load: $(cut -d' ' -f1-3 /proc/loadavg))"
-  touch "$root/setup-done"
+  date -u '+%Y-%m-%d %H:%M:%S UTC' > "$root/setup-done"
 fi
+rm -rf "$work/unzipped"
 for gone in solutions tests/mutants tests/tamper build/release/apps/hw2-grade-sol build/release/grading-cache/none; do
   [ ! -e "$root/source/opspace/$gone" ] || { echo "setup.sh left $gone"; exit 1; }
 done
@@ -104,8 +117,10 @@ cmake -DJSON="$work/submission-folder.json" "-DFULL=1a;1b;2" "-DZERO=3;4" \
 # No grader: run_autograder still writes a results.json, with a score of 0 and the reason.
 grader="$root/source/opspace/build/release/apps/hw2-grade"
 mv "$grader" "$grader.away"
+trap 'mv "$grader.away" "$grader"' EXIT  # the image stays whole for the next run
 grade submission-reference
 mv "$grader.away" "$grader"
+trap - EXIT
 cp "$work/submission-reference.json" "$work/submission-no-grader.json"
 cmake -DJSON="$work/submission-no-grader.json" -DEMPTY=ON "-DOUTPUT=could not grade this submission: the grader.*is missing" -P "$check"
 echo "the bundle sets up, locks down and grades every kind of submission"
