@@ -15,11 +15,12 @@
 # setup.sh configures, builds, proves and locks it down; that the sources compile, the build of
 # this tree proves. Without ccache it compiles everything.
 # One image per bundle: the set-up ROOT lives in IMAGES/<fingerprint> (default
-# REPO/build/autograder-images), the fingerprint being the SHA-256 of every file of the zip with
-# its path and mode. A second run with the identical bundle (CI's sanitized suite after the release suite,
-# in the same clone) reuses that image, which setup.sh built, proved and locked down in the first
-# run, and grades every submission again; any change to a file of the bundle, setup.sh and the
-# grader options included, makes a new image. AUTOGRADER_TEST_FRESH=1 sets up anew regardless.
+# REPO/build/autograder-images), the fingerprint being the SHA-256 of every file of the zip
+# with its path and mode. A second run with the identical bundle (CI's sanitized suite after
+# the release suite, in the same clone) reuses that image, which setup.sh built, proved and
+# locked down in the first run, and grades every submission again; any change to a file of the
+# bundle, setup.sh and the grader options included, makes a new image. AUTOGRADER_TEST_FRESH=1
+# sets up anew regardless.
 #   bash tests/deploy/autograder.sh REPO WORK [IMAGES]
 set -euo pipefail
 repo=$1 work=$2
