@@ -221,7 +221,9 @@ try {
     console.log(`screenshot: ${screenshot}`);
     await page.mouse.up();
     const released = await frameWhere((f) => f.push === null && f.command >= window.opspaceLive.lastSent);
-    check(released !== null && !(await label.isVisible()), 'releasing the mouse ends the push and hides the label');
+    // The label goes with the page's next draw, which may come a draw's time after the frame.
+    const hidden = await label.waitFor({ state: 'hidden', timeout: 2000 }).then(() => true, () => false);
+    check(released !== null && hidden, 'releasing the mouse ends the push and hides the label');
   }
   /// The frames of the run since the last reset, [t, poses] each.
   const thisRun = () => page.evaluate(() => {

@@ -36,13 +36,7 @@ void P2Lab::plot_values(std::vector<double>& values) const {
 }
 
 void P2Lab::marker_positions(std::vector<Eigen::Vector3d>& positions) const {
-  if (result_.samples.empty()) {
-    const Eigen::Vector3d x_d = p2::goal(0.0).x_d.head<3>();
-    positions = {x_d, x_d};
-    return;
-  }
-  const p2::Sample& s = result_.samples.back();
-  positions = {s.x_d.head<3>(), s.x_p};
+  target_and_tool(result_, p2::goal(0.0).x_d.head<3>(), positions);
 }
 
 }  // namespace opspace::live

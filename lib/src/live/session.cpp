@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <utility>
 #include <nlohmann/json.hpp>
 
 #include "opspace/algorithms/kinematics.hpp"
@@ -105,8 +106,8 @@ void Session::release() {
   push_force_ = PushForce{};
 }
 
-double Session::time() const { return const_cast<Lab&>(lab_).simulation().time(); }
-double Session::dt() const { return const_cast<Lab&>(lab_).simulation().settings().dt; }
+double Session::time() const { return std::as_const(lab_).simulation().time(); }
+double Session::dt() const { return std::as_const(lab_).simulation().settings().dt; }
 
 void Session::step(bool advance) {
   if (paused_ || !error_.empty()) return;

@@ -67,6 +67,8 @@ class Lab {
   virtual void reset() = 0;
   /// The simulation the loop steps (rebuilt by reset()).
   virtual Simulation& simulation() = 0;
+  /// The same, to read (time, settings).
+  virtual const Simulation& simulation() const = 0;
   /// Law `law`, an index into info().laws, from the next tick.
   virtual void set_law(int law) = 0;
   /// Gain info().gains[gain] to `value` from the next tick.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "opspace/live/lab.hpp"
 
@@ -19,6 +20,7 @@ class LoopLab : public Lab {
     result_ = Result{};
   }
   Simulation& simulation() override { return loop_->simulation(); }
+  const Simulation& simulation() const override { return loop_->simulation(); }
   void set_law(int) override {}
   /// info().gains[gain] is kpx, kvx or kvj.
   void set_gain(int gain, double value) override {
@@ -44,5 +46,18 @@ class LoopLab : public Lab {
  private:
   Eigen::VectorXd tau_;
 };
+
+/// Markers of problems 2 and 3: the target x_pd and the tool x_p at the last tick, or the
+/// first target twice before any tick.
+template <class Result>
+void target_and_tool(const Result& result, const Eigen::Vector3d& first_target,
+                     std::vector<Eigen::Vector3d>& positions) {
+  if (result.samples.empty()) {
+    positions = {first_target, first_target};
+    return;
+  }
+  const auto& s = result.samples.back();
+  positions = {s.x_d.template head<3>(), s.x_p};
+}
 
 }  // namespace opspace::live
