@@ -221,7 +221,7 @@ try {
     console.log(`screenshot: ${screenshot}`);
     await page.mouse.up();
     const released = await frameWhere((f) => f.push === null && f.command >= window.opspaceLive.lastSent);
-    // The label goes with the page's next draw, which may come a draw's time after the frame.
+    // The page hides the label in its next animation frame, which may follow the frame seen here.
     const hidden = await label.waitFor({ state: 'hidden', timeout: 2000 }).then(() => true, () => false);
     check(released !== null && hidden, 'releasing the mouse ends the push and hides the label');
   }
