@@ -20,7 +20,8 @@ double gravity_torque(const Vector6d& S, const SpatialInertia& subtree, const Ei
 }
 
 /// CRBA on the poses already in data, in the base frame: Ic_i = I_i + the Ic of its children,
-/// then A_ji = S_j^T Ic_i S_i for every j on the path from i to the base (and A_ij = A_ji).
+/// then A_ji = S_j^T Ic_i S_i for every j on the path from i to the base (and A_ij = A_ji);
+/// the joint's armature (Body::armature) adds to A_ii.
 /// The inertias are kept as (m, h, I) (SpatialInertia): a sum costs 13 additions, not 36.
 /// With `g`, also g(q) from the same composite inertias (gravity_torque).
 void crba_at_pose(const Model& model, Data& data, Eigen::VectorXd* g) {
@@ -30,7 +31,7 @@ void crba_at_pose(const Model& model, Data& data, Eigen::VectorXd* g) {
   data.A.setZero();
   for (int i = n - 1; i >= 0; --i) {  // children have larger indices: Ic[i] is complete here
     const Vector6d F = spatial::apply_inertia(data.Ic[i], data.S[i]);
-    data.A(i, i) = data.S[i].dot(F);
+    data.A(i, i) = data.S[i].dot(F) + model.bodies[i].armature;
     for (int j = model.bodies[i].parent; j >= 0; j = model.bodies[j].parent) {
       data.A(j, i) = data.A(i, j) = data.S[j].dot(F);
     }
@@ -66,7 +67,7 @@ void gravity_at_pose(const Model& model, Data& data, Eigen::VectorXd& g) {
 /// RNEA on the poses already in data, into `out`:
 ///   forward:  v_i = v_p + S_i qd_i,  a_i = a_p + S_i qdd_i + v_i xm S_i qd_i,  a_base = [-gravity; 0]
 ///             f_i = I_i a_i + v_i xf I_i v_i
-///   backward: out_i = S_i^T f_i,  f_p += f_i
+///   backward: out_i = S_i^T f_i + armature_i qdd_i,  f_p += f_i
 /// A null qdot or qdd stands for zero (so no zero vector needs to be allocated). The inertias
 /// are applied without forming them (spatial::apply_inertia). (g alone: gravity_at_pose.)
 void rnea_at_pose(const Model& model, Data& data, const Eigen::Ref<const Eigen::VectorXd>* qdot,
@@ -90,6 +91,7 @@ void rnea_at_pose(const Model& model, Data& data, const Eigen::Ref<const Eigen::
   }
   for (int i = n - 1; i >= 0; --i) {
     out(i) = data.S[i].dot(data.f[i]);
+    if (qdd) out(i) += model.bodies[i].armature * (*qdd)(i);  // the rotor's own torque
     const int parent = model.bodies[i].parent;
     if (parent >= 0) data.f[parent] += data.f[i];
   }

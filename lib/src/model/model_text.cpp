@@ -219,6 +219,9 @@ std::string write_model_text(const Model& model) {
     write_inertia(w, b.inertia);
     w.num(b.lower).num(b.upper).num(b.effort).num(b.velocity).end_line();
   }
+  for (int i = 0; i < model.dof(); ++i) {  // only where there is one: older texts stay valid
+    if (model.bodies[i].armature != 0.0) w.word("armature").num(i).num(model.bodies[i].armature).end_line();
+  }
   for (const Frame& f : model.frames) {
     w.word("frame").word(encode(f.name)).num(f.body).placement(f.placement).end_line();
   }
@@ -273,6 +276,11 @@ Model read_model_text(const std::string& text, const std::string& source) {
       b.velocity = line.num("velocity limit");
       if (b.effort < 0.0 || b.velocity < 0.0) line.fail("joint '" + b.joint_name + "' has a negative effort or velocity limit");
       model.bodies.push_back(b);
+    } else if (record == "armature") {
+      const int i = line.index("armature joint", 0, model.dof());  // after its body
+      const double armature = line.num("armature");
+      if (armature < 0.0) line.fail("joint '" + model.bodies[i].joint_name + "' has a negative armature");
+      model.bodies[i].armature = armature;
     } else if (record == "frame") {
       Frame f;
       f.name = line.name("frame name");

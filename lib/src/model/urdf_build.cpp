@@ -132,6 +132,7 @@ class Builder {
       b.effort = limits.effort;
       b.velocity = limits.velocity;
     }
+    if (const auto it = lines_.armature.find(joint.name); it != lines_.armature.end()) b.armature = it->second;
     model_.bodies.push_back(b);
     body = model_.dof() - 1;
     X = Eigen::Isometry3d::Identity();

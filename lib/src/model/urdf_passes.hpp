@@ -21,9 +21,11 @@ void check_encoding(const std::string& xml, const std::string& source);
 /// ... and its markup nests at most 100 deep, with at most 100 attributes per element.
 void check_markup(const std::string& xml, const std::string& source);
 
-/// Line of each link and joint element, from pass 1.
+/// Line of each link and joint element, from pass 1, and the armature of each joint that has
+/// an `<armature>` element (opspace's extension: URDF has no field for a motor's inertia).
 struct Lines {
   std::map<std::string, int> link, joint;
+  std::map<std::string, double> armature;  ///< joint name -> Jm G^2 (kg m^2 or kg)
 };
 
 /// Pass 1 (urdf_structure.cpp): XML well-formedness, supported joints, tree shape. Returns the

@@ -1,12 +1,16 @@
 // Pass 1 of the URDF loader (urdf.cpp), with TinyXML (which urdfdom itself depends on): what
 // urdfdom does not check, or reports without a line number: well-formed XML, joint types, mimic
-// joints, the tree shape (one parent per link, one root, no loop). It records each link's and
+// joints, the tree shape (one parent per link, one root, no loop), and opspace's <armature>
+// extension (which urdfdom ignores). It records each link's and
 // joint's line, by which a later message names its line: pass 2's, and urdfdom's, whose joint or
 // link line_named_in finds.
 #include <tinyxml.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <set>
@@ -23,6 +27,48 @@ namespace {
 std::string attribute(const TiXmlElement* e, const char* name) {
   const char* value = e ? e->Attribute(name) : nullptr;
   return value ? value : "";
+}
+
+/// The attribute `name` of the `<armature>` of joint `joint` as a finite number, >= 0 unless
+/// `signed_ok` (the whole text a number: strtod alone would take "1e" or "2kg").
+double armature_number(const TiXmlElement* e, const char* name, const std::string& joint,
+                       const std::string& source, bool signed_ok = false) {
+  const std::string text = attribute(e, name);
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v) ||
+      (v < 0.0 && !signed_ok)) {
+    fail(source, e->Row(), "joint '" + joint + "' has <armature " + name + "=\"" + text +
+                               "\">: expected a finite number" + (signed_ok ? "" : " >= 0"));
+  }
+  return v;
+}
+
+/// opspace's extension for a motor's reflected inertia, one per moving joint at most:
+/// `<armature value="Jm G^2"/>`, or `<armature rotor_inertia="Jm" gear_ratio="G"/>` (value
+/// Jm G^2, the Robotics Toolbox's parameters as published; the sign of G is its direction).
+double read_armature(const TiXmlElement* joint, const std::string& name, const std::string& type,
+                     const std::string& source) {
+  const TiXmlElement* e = joint->FirstChildElement("armature");
+  if (e == nullptr) return 0.0;
+  if (e->NextSiblingElement("armature")) {
+    fail(source, e->NextSiblingElement("armature")->Row(), "joint '" + name + "' has a second <armature>");
+  }
+  if (type == "fixed") fail(source, e->Row(), "joint '" + name + "' is fixed: an <armature> needs a moving joint");
+  const bool by_value = e->Attribute("value") != nullptr;
+  const bool by_motor = e->Attribute("rotor_inertia") != nullptr || e->Attribute("gear_ratio") != nullptr;
+  if (by_value == by_motor) {
+    fail(source, e->Row(), "joint '" + name + "' has an <armature> with " +
+                               (by_value ? "both value and rotor_inertia/gear_ratio" : "no value") +
+                               ": give value=\"Jm G^2\", or rotor_inertia=\"Jm\" and gear_ratio=\"G\"");
+  }
+  if (by_value) return armature_number(e, "value", name, source);
+  const double jm = armature_number(e, "rotor_inertia", name, source);
+  const double ratio = armature_number(e, "gear_ratio", name, source, true);
+  const double value = jm * ratio * ratio;
+  if (!std::isfinite(value)) fail(source, e->Row(), "joint '" + name + "' has an armature Jm G^2 that overflows");
+  return value;
 }
 
 }  // namespace
@@ -70,6 +116,7 @@ Lines check_structure(const std::string& xml, const std::string& source) {
       fail(source, mimic->Row(), "joint '" + name + "' mimics joint '" + attribute(mimic, "joint") +
                                      "': mimic joints are not supported");
     }
+    if (const double armature = read_armature(e, name, type, source); armature != 0.0) lines.armature[name] = armature;
     const std::string parent = attribute(e->FirstChildElement("parent"), "link");
     const std::string child = attribute(e->FirstChildElement("child"), "link");
     for (const std::string* link : {&parent, &child}) {

@@ -50,6 +50,13 @@ struct Body {
   double upper = 0.0;               ///< upper position limit (rad or m)
   double effort = 0.0;              ///< torque/force limit (N m or N)
   double velocity = 0.0;            ///< speed limit (rad/s or m/s)
+  /// Armature: the reflected inertia of the joint's motor, Jm G^2 for a rotor of inertia Jm
+  /// behind a gear of ratio G (kg m^2, or kg for a prismatic joint), 0 by default. It adds to
+  /// A(q)'s diagonal entry i only (a rotor spinning G times faster than its joint dominates
+  /// its own kinetic energy; its coupling with the other joints, of order 1/G, is neglected, as
+  /// in the Robotics Toolbox). Read from the URDF extension `<armature>` (docs/model.md), or
+  /// set here on a loaded Model before its Data and algorithms use it.
+  double armature = 0.0;
 };
 
 /// Every URDF link by name, moving or merged, so that a tool frame can serve as a tip.

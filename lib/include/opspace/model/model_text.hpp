@@ -12,6 +12,7 @@
 ///   gravity GX GY GZ
 ///   base MASS CX CY CZ I(3x3 row by row)
 ///   body JOINT LINK revolute|prismatic PARENT PLACEMENT AX AY AZ MASS CX CY CZ I(9) LOWER UPPER EFFORT VELOCITY
+///   armature BODY VALUE         (only for a body whose Body::armature is not 0)
 ///   frame NAME BODY PLACEMENT
 ///   visual|collision LINK BODY box|cylinder|sphere SX SY SZ RADIUS LENGTH PLACEMENT
 ///   end
