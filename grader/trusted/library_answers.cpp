@@ -51,7 +51,8 @@ std::vector<Oracle> oracles(const std::string& key) {
         "i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv",
         "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv elsewhere",
         "iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0",
-        "iv. at theta = (0, 90 deg, 0) the elbow lock Z0 is Type I and the overhead lock Y0 Type II",
+        "iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I elbow lock along Z0 and a "
+        "Type II overhead lock across its plane",
         "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one"};
     for (const char* f : {"opspace::directions", "opspace::singularity_type", "opspace::analyse_singularities",
                           "opspace::self_motion_curvature", "opspace::directional_hessian"})

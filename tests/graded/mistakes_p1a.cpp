@@ -46,6 +46,26 @@ std::vector<Mistake> mistakes_1a() {
          };
        },
        {"v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector"}},
+      // A route, not a slip: the stub's answer with the solution set's two projectors pasted in
+      // for its own inputs. Each projector test asks J = [1 1] first, then random J and right
+      // inverses, where the table has nothing to say.
+      {"the projectors looked up for the problem set's inputs (J = [1 1] with J+ or Jbar) and left at 0 elsewhere",
+       "I - J_inv J, computed from the J and the J_inv given, for any J and any right inverse",
+       [](Hw2Api& api) {
+         api.p1a.nullspace_projector = [](const Eigen::RowVector2d& J, const Eigen::Vector2d& J_inv) {
+           const auto is = [](const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& b) {
+             return (a - b).norm() < 1e-12;
+           };
+           const bool problem_set_J = is(J, Eigen::RowVector2d(1, 1));
+           if (problem_set_J && is(J_inv, Eigen::Vector2d(0.5, 0.5)))  // the solution set's I - J+ J
+             return Eigen::Matrix2d((Eigen::Matrix2d() << 0.5, -0.5, -0.5, 0.5).finished());
+           if (problem_set_J && is(J_inv, Eigen::Vector2d(0, 1)))  // the solution set's I - Jbar J
+             return Eigen::Matrix2d((Eigen::Matrix2d() << 1, 0, -1, 0).finished());
+           return Eigen::Matrix2d(Eigen::Matrix2d::Zero());  // the stub's answer
+         };
+       },
+       {"iv. I - J+ J keeps only the self-motions that leave the end-effector still",
+        "v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector"}},
       {"question vi answered with J+ for both splits",
        "the second split uses Jbar = A^-1 J^T (J A^-1 J^T)^-1 with A = A(m1, m2): it moves only d2",
        [](Hw2Api& api) {

@@ -1,5 +1,7 @@
 // Known mistakes of problem 1b. Each wraps the control law it is given (the reference
-// solutions, or the grader's oracle) and changes it in one place.
+// solutions, or the grader's oracle) and changes it in one place. Every simulated test checks
+// the law at every tick of its runs (law_pin.hpp), so a mistake in a part's law costs each
+// simulated test that runs that part, whatever the run's behaviour.
 #include "mistakes.hpp"
 
 namespace opspace::grading {
@@ -50,8 +52,9 @@ std::vector<Mistake> mistakes_1b() {
          };
        },
        {law3, sim3, ratio}},
-      // The tip is still held (the projection is dynamically consistent) but joint 2 sags under
-      // the gravity left uncompensated in the null space.
+      // In PART3 the tip is still held (the projection is dynamically consistent) but joint 2 sags
+      // under the gravity left uncompensated in the null space; PART2's law is wrong too, which
+      // the ratio test's pin sees.
       {"the null-space task without g",
        "the joint task is A (-kpj (q - q_d) - kvj dq) + g: gravity compensation goes through the projector",
        [](Hw2Api& api) {
@@ -60,7 +63,22 @@ std::vector<Mistake> mistakes_1b() {
            return nullspace_part(part) ? Vector6d(tau - projector(part, s) * s.g) : tau;
          };
        },
-       {law2, law3, sim3}},
+       {law2, law3, sim3, ratio}},
+      // A route, not a slip: a drift made to order. PART3's law held 5 cm below x_d drifts ~50 mm
+      // RMS from x_d, over ten times PART3's, with joint 2 on q_d: the ratio test's behaviour
+      // passes, and only the pin of PART2's law, with the law test, sees that it is not PART2's.
+      {"PART2 written as PART3's law aimed 5 cm below x_d",
+       "PART2 applies Jv^T F + (I - Jv^T Jv+^T) (A (-kpj (q - q_d) - kvj dq) + g) aimed at x_d: its drift must come "
+       "from the pseudo-inverse projector",
+       [](Hw2Api& api) {
+         api.p1b.control = [law = api.p1b.control](Part part, const State& s, const Goal& g) {
+           if (part != Part::kPseudoInverseNullspace) return law(part, s, g);
+           Goal off = g;
+           off.x_d.z() -= 0.05;
+           return law(Part::kDynamicallyConsistentNullspace, s, off);
+         };
+       },
+       {law2, ratio}},
       // The unprojected share (I - P) g = Jv^T J_inv^T g compensates gravity at the tip a second
       // time: in PART3 the tip is pushed by p, tens of newtons against a stiffness of kpx Lambda_v,
       // and held centimetres off x_d, so PART3 no longer holds its tip nor drifts ten times less.

@@ -1,5 +1,7 @@
 // Known mistakes of problem 2. The law is written out with one mistake made; 2(a)'s mistake
-// wraps the function it is given (the reference solutions, or the grader's oracle).
+// wraps the function it is given (the reference solutions, or the grader's oracle). Every
+// simulated test checks the law at every tick of the run (law_pin.hpp), so a mistake in the law
+// costs all five of them, whatever the run's behaviour; the comments say what the run shows.
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/hw2/p2.hpp>
 
@@ -81,46 +83,49 @@ std::vector<Mistake> mistakes_2() {
   const std::string limits = "d. in simulation no joint goes more than 5 degrees past its URDF limit";
   const std::string drift =
       "d. in simulation the arm repeats its motion every period: the null-space self-motion is damped";
+  const std::vector<std::string> law_and_run = {law, position, orientation, continuous, limits, drift};
   return {
       // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation
       // (closed forms in tests/graded/p2.cpp); the arm still moves as it should otherwise.
       {"no feed-forward acceleration [vdot_d; wdot_d]",
        "the command is -kpx e - kvx (edot) + [vdot_d; wdot_d], with [vdot_d; wdot_d] = E^+ xddot_d from 2(b)",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_feed_forward>; },
-       {law, position, orientation}},
+       law_and_run},
       // For unit Euler parameters delta_phi is the same at lambda_d (test_euler_params.cpp), and
       // E^+(lambda_d) xdot_d differs from E^+(lambda) xdot_d only to second order in the
-      // tracking error: in simulation the mistake is invisible, only the law test sees it.
+      // tracking error: the run's behaviour looks right, and only the law test and the pin of the
+      // law in the simulated tests see the mistake.
       {"E^+ evaluated at lambda_d instead of the current lambda",
        "every E^+ in the law is evaluated at the current s.lambda",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::E_pinv_at_lambda_d>; },
-       {law}},
+       law_and_run},
       // Positive orientation feedback: link7 turns away from lambda_d until the error reaches
       // 180 degrees (lambda flips), the arm swings far off its path and past joint limits.
       {"delta_phi with the wrong sign, E^+ (lambda_d - lambda)",
        "delta_phi = E_r^+ (lambda - lambda_d), so that -kpx delta_phi turns link7 back to lambda_d",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::delta_phi_flipped>; },
-       {law, position, orientation, continuous, limits, drift}},
+       law_and_run},
       // The task is still tracked, but the elbow's self-motion is undamped: the arm's posture
       // wanders by tens of degrees per period.
       {"no null-space damping N0^T A (-kvj dq)",
        "the null-space term is N0^T (A (-kvj dq) + g): it damps the self-motion",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_nullspace_damping>; },
-       {law, drift}},
+       law_and_run},
       // A (-kvj dq) unprojected damps the task motion too: the arm lags by centimetres.
       {"joint damping A (-kvj dq) added without the projector N0^T",
        "the joint damping goes through N0^T, so that it cannot act on the task",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::damping_not_projected>; },
-       {law, position, orientation}},
+       law_and_run},
       // Without p the task sags under the share of gravity the task carries: link7 tracks
       // centimetres below its path, tilted, and the arm's joints take another path, past a limit.
       {"p, the gravity at the task, left out of the task force",
        "F = Lambda0 (...) + p, with p = Jbar0^T g; N0^T g alone compensates only the null space's share",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_p>; },
-       {law, position, orientation, limits}},
+       law_and_run},
       // The run feeds the student's 2(a) to the controller, yet the missing terms are
       // -a'^2 lambda_d, along lambda_d: the part of lambdaddot_d that only keeps |lambda_d| = 1,
-      // which E_r^+ (E_r^T lambda = 0) projects away. Only the formula test sees it.
+      // which E_r^+ (E_r^T lambda = 0) projects away. The pin compares the law with the goal the
+      // run gave it (this 2(a)'s xddot_d), so only the formula test sees it.
       {"2(a) without the -sin(a) a'^2 term of the chain rule",
        "d^2/dt^2 sin(a) = cos(a) a'' - sin(a) a'^2 (and likewise for cos(a))",
        [](Hw2Api& api) {

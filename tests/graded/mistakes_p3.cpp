@@ -1,4 +1,6 @@
-// Known mistakes of problem 3. The law is written out with one mistake made.
+// Known mistakes of problem 3. The law is written out with one mistake made. Every simulated
+// test checks the law at every tick of the run (law_pin.hpp), so a mistake in the law that
+// changes the torque the run applies costs all five of them, whatever the run's behaviour.
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/hw2/p3.hpp>
 
@@ -71,19 +73,20 @@ std::vector<Mistake> mistakes_3() {
        },
        {selection, law, force, flat, yz, rx, kept}},
       // The scenario's F_d = [10, 0, 0, 0, 0, 0] lies in the force directions already, so
-      // without Omega-bar the torque is the same in simulation: only the law test, whose F_d
-      // has components in the motion directions too, sees it.
+      // without Omega-bar the torque is the same in simulation, at every tick (the pin passes):
+      // only the law test, whose F_d has components in the motion directions too, sees it.
       {"the desired force F_d added without Omega-bar",
        "the force goes through Omega-bar: + Omega-bar F_d, so that it acts only in the force directions",
        [](Hw2Api& api) { api.p3.control = &with<&Mistakes::no_omega_bar>; },
        {law}},
       // Lambda0 F_d = 10 Lambda0(:, 0): at the start Lambda0(0, 0) = 3.4 kg, so the tool pushes
       // 33 N on average instead of 10 N; Lambda0(1, 0) = 1.1 kg adds an 11 N push along y that
-      // the motion loop must fight, 33 mm RMS of y, z error.
+      // the motion loop must fight, 33 mm RMS of y, z error. The face stays flat, in contact, and
+      // turns with lambda_d: those three tests fail on the pin of the law alone.
       {"the desired force multiplied by Lambda0 (treated as an acceleration)",
        "F_d is a force: Omega-bar F_d is added after Lambda0, not multiplied by it",
        [](Hw2Api& api) { api.p3.control = &with<&Mistakes::force_times_lambda>; },
-       {law, force, yz}},
+       {law, force, flat, yz, rx, kept}},
   };
 }
 

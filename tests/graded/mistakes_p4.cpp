@@ -2,6 +2,9 @@
 // reference solutions, or the grader's oracle).
 #include <opspace/hw2/p4.hpp>
 #include <opspace/algorithms/linalg.hpp>
+#include <opspace/scenarios/p4.hpp>
+
+#include <cmath>
 
 #include "mistakes.hpp"
 
@@ -36,6 +39,15 @@ SingularityType type_over_all_joint_motions(const Kinematics& k, const Eigen::Ve
                                                                        : SingularityType::kTypeII;
 }
 
+// iv. A route, not a slip: the stub's answer with the solution set's types pasted in for its
+// configuration theta = (0, 90 deg, 0) (Z0 Type I, Y0 Type II, X0 none), kNone everywhere else.
+SingularityType types_looked_up(const Kinematics& k, const Eigen::Vector3d& u) {
+  const bool problem_set_q = (k.q - scenarios::p4::singular_q()).norm() < 1e-9;
+  if (problem_set_q && std::abs(std::abs(u(2)) - 1.0) < 1e-9) return SingularityType::kTypeI;
+  if (problem_set_q && std::abs(std::abs(u(1)) - 1.0) < 1e-9) return SingularityType::kTypeII;
+  return SingularityType::kNone;  // the stub's answer
+}
+
 using Law = Fn<decltype(hw2::p4::control)>;
 
 // v. The Z0 potential with its minimum at the stretched arm (q_d[2] = 0): it pulls the elbow
@@ -54,8 +66,8 @@ Eigen::Vector3d z0_potential_stretches(const Law& law, Target target, const Stat
 std::vector<Mistake> mistakes_4() {
   const std::string dirs = "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null "
                            "space of Jv elsewhere";
-  const std::string types0 = "iv. at theta = (0, 90 deg, 0) the elbow lock Z0 is Type I and the overhead lock "
-                             "Y0 Type II";
+  const std::string types0 = "iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I "
+                             "elbow lock along Z0 and a Type II overhead lock across its plane";
   const std::string types = "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one";
   const std::string law = "v. the controller applies Jv^T F + N^T (A (-kpj (q - q_d) - kvj dq) + g) with each "
                           "target's potential";
@@ -73,6 +85,13 @@ std::vector<Mistake> mistakes_4() {
       {"Type I/II tested over all joint motions, not the self-motions",
        "the type tests the self-motions only: C_u = Nb^T H_u Nb with Nb a basis of the null space of Jv",
        [](Hw2Api& api) { api.p4.singularity_type = &type_over_all_joint_motions; },
+       {types0, types}},
+      // Right at theta = (0, 90 deg, 0), wrong at the same arm turned about Z0 (its overhead lock is
+      // no longer Y0) and at every other singular configuration.
+      {"the types looked up for theta = (0, 90 deg, 0) alone (Z0 Type I, Y0 Type II) and kNone elsewhere",
+       "the type of u at the configuration given: kNone unless u^T Jv = 0, then Type I if some self-motion moves "
+       "the tip along u at second order (C_u = Nb^T H_u Nb != 0), else Type II",
+       [](Hw2Api& api) { api.p4.singularity_type = &types_looked_up; },
        {types0, types}},
       // Turning joint 1 does not unlock a stretched elbow, and retracting the arm does not turn
       // its plane: neither target is reached.

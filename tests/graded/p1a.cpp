@@ -1,8 +1,9 @@
 // Graded tests of problem 1a. Every expected value comes from an oracle with a reason:
 // the closed forms of lib/include/opspace/algorithms/pp_robot.hpp (derived by hand from the problem
-// set and cross-checked in tests/lib/test_pp_robot.cpp), or the general inverses of linalg.hpp
-// at random Jacobians and weights, so that an answer hard-coded for m1 = 10, m2 = 5 or
-// J = [1 1] cannot pass.
+// set and cross-checked in tests/lib/test_pp_robot.cpp), the general inverses of linalg.hpp
+// at random Jacobians and weights, or the closed form of a 2x2 projector written out below.
+// Every test that takes inputs asks the problem set's inputs as one case among random ones, so
+// that an answer hard-coded for m1 = 10, m2 = 5 or J = [1 1] cannot pass.
 #include <opspace/algorithms/linalg.hpp>
 #include <opspace/algorithms/pp_robot.hpp>
 
@@ -34,6 +35,19 @@ Eigen::RowVector2d random_jacobian(Random& rng) {
 Eigen::Matrix2d random_spd(Random& rng) {
   const Eigen::Matrix2d W = rng.spd(2, 0.5);
   return 0.5 * (W + W.transpose());
+}
+
+// The oracle of the three projector tests, independent of the formula I - J_inv J the student
+// writes. For J = [a b], null(J) is the line of n = (-b, a). A right inverse J_inv (J J_inv = 1)
+// splits the plane into null(J) and the line of J_inv; I - J_inv J is the projector onto null(J)
+// along J_inv: it keeps n (J n = 0) and sends J_inv to J_inv - J_inv (J J_inv) = 0. The unique
+// such projector is n m^T / (m . n) with m = (-J_inv(1), J_inv(0)), orthogonal to J_inv
+// (m . n = J J_inv = 1 up to round-off). For J+ = J^T / |J|^2, m is along n and the projector is
+// the orthogonal n n^T / |n|^2.
+Eigen::Matrix2d projector_onto_nullspace_along(const Eigen::RowVector2d& J, const Eigen::Vector2d& J_inv) {
+  const Eigen::Vector2d n(-J(1), J(0));
+  const Eigen::Vector2d m(-J_inv(1), J_inv(0));
+  return n * m.transpose() / m.dot(n);
 }
 
 void degrees_of_freedom(const Hw2Api& api, Check& check) {
@@ -79,8 +93,20 @@ void pseudo_inverse(const Hw2Api& api, Check& check) {
 
 void pseudo_inverse_projector(const Hw2Api& api, Check& check) {
   const Eigen::RowVector2d J = pp::task_jacobian();
-  check.near("I - J+ J", pp::pseudo_inverse_nullspace(), api.p1a.nullspace_projector(J, pp::pseudo_inverse()),
-             kTol, "The projector keeps the joint motions that leave x_ee still: d1 and d2 opposite");
+  if (!check.near("I - J+ J for J = [1 1]", pp::pseudo_inverse_nullspace(),
+                  api.p1a.nullspace_projector(J, pp::pseudo_inverse()), kTol,
+                  "The projector keeps the joint motions that leave x_ee still: d1 and d2 opposite"))
+    return;
+  Random rng(seed_for(108));
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const Eigen::RowVector2d Jr = random_jacobian(rng);
+    const Eigen::Vector2d J_pinv = Jr.transpose() / Jr.squaredNorm();  // J J^T is the number |J|^2
+    if (!check.near("I - J+ J for J = " + format(Jr) + ", J+ = " + format(J_pinv),
+                    projector_onto_nullspace_along(Jr, J_pinv), api.p1a.nullspace_projector(Jr, J_pinv), kTol,
+                    "I - J+ J is the orthogonal projector onto the null space of J, the line of (-J(1), J(0)): "
+                    "it must hold for any J, not only [1 1]"))
+      return;
+  }
 }
 
 void weighted_inverse(const Hw2Api& api, Check& check) {
@@ -116,6 +142,15 @@ void weighted_projector(const Hw2Api& api, Check& check) {
                     "transpose, the projector that acts on torques, and differs when J# is not J+"))
       return;
   }
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const Eigen::RowVector2d Jr = random_jacobian(rng);
+    const Eigen::Vector2d J_sharp = opspace::weighted_inverse(Jr, random_spd(rng));
+    if (!check.near("I - J# J for J = " + format(Jr) + ", J# = " + format(J_sharp),
+                    projector_onto_nullspace_along(Jr, J_sharp), api.p1a.nullspace_projector(Jr, J_sharp), kTol,
+                    "I - J# J keeps the self-motions (J dq = 0) and removes the motion along J#: it must hold "
+                    "for any J and any right inverse"))
+      return;
+  }
 }
 
 void inertia_weighted_inverse(const Hw2Api& api, Check& check) {
@@ -141,9 +176,21 @@ void inertia_weighted_inverse(const Hw2Api& api, Check& check) {
 }
 
 void inertia_weighted_projector(const Hw2Api& api, Check& check) {
-  check.near("I - Jbar J", pp::inertia_weighted_nullspace(),
-             api.p1a.nullspace_projector(pp::task_jacobian(), pp::inertia_weighted_inverse()), kTol,
-             "With Jbar = [0 1]^T the self-motion moves d1 and compensates with d2 = -d1");
+  if (!check.near("I - Jbar J for J = [1 1], Jbar = [0 1]^T", pp::inertia_weighted_nullspace(),
+                  api.p1a.nullspace_projector(pp::task_jacobian(), pp::inertia_weighted_inverse()), kTol,
+                  "With Jbar = [0 1]^T the self-motion moves d1 and compensates with d2 = -d1"))
+    return;
+  Random rng(seed_for(109));
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const Eigen::RowVector2d Jr = random_jacobian(rng);
+    const Eigen::Matrix2d A = random_spd(rng);
+    const Eigen::Vector2d Jbar = opspace::dynamically_consistent_inverse(Jr, A);
+    if (!check.near("I - Jbar J for J = " + format(Jr) + ", A = " + format(A) + ", Jbar = " + format(Jbar),
+                    projector_onto_nullspace_along(Jr, Jbar), api.p1a.nullspace_projector(Jr, Jbar), kTol,
+                    "I - Jbar J keeps the self-motions (J dq = 0) and removes the motion along Jbar: it must "
+                    "hold for any mass matrix and any J"))
+      return;
+  }
 }
 
 void inverse_kinematics_family(const Hw2Api& api, Check& check) {

@@ -3,7 +3,9 @@
 //   singular families, against closed forms of the geometry (derived below and in
 //   docs/problem4.md), from the library's Jv, Jw and Hessians of the tip;
 // - question v: the law at random states against the equation written out here, and the
-//   closed loop on the Bullet simulation, beside the plain operational-space controller.
+//   closed loop on the Bullet simulation, beside the plain operational-space controller,
+//   measured only on the problem set's law: every tick of the run is compared with the law's
+//   oracle at the same State and Goal (law_pin.hpp).
 #include <opspace/scenarios.hpp>
 #include <opspace/model/urdf.hpp>
 
@@ -11,6 +13,7 @@
 #include <cstdio>
 #include <map>
 
+#include "law_pin.hpp"
 #include "oracles.hpp"
 #include "suite.hpp"
 #include "support/random.hpp"
@@ -67,6 +70,7 @@ struct Case {
   Eigen::Vector3d q;
   Eigen::MatrixXd singular;  // 3 x m closed-form singular directions
   std::vector<SingularityType> types;  // of each column
+  bool straight_up = false;  // theta2 = 90 deg, theta3 = 0: the problem set's arm, turned about Z0 or not
 };
 
 Eigen::Vector3d plane_normal(double q1) { return Eigen::Vector3d(-std::sin(q1), std::cos(q1), 0.0); }
@@ -77,7 +81,7 @@ std::vector<Case> cases() {
   // lock (Type II).
   out.push_back({"the problem set's configuration", p4::singular_q(),
                  (Eigen::MatrixXd(3, 2) << 0, 0, 0, 1, 1, 0).finished(),
-                 {SingularityType::kTypeI, SingularityType::kTypeII}});
+                 {SingularityType::kTypeI, SingularityType::kTypeII}, true});
   testing::Random rng(seed_for(401));
   for (int k = 0; k < 2; ++k) {
     // Elbow lock alone: q3 = 0, |q2| <= 60 deg so r = cos q2 >= 0.5. The tip cannot move along
@@ -98,7 +102,7 @@ std::vector<Case> cases() {
     Eigen::MatrixXd both(3, 2);
     both << Eigen::Vector3d::UnitZ(), plane_normal(c);
     out.push_back({"the straight-up arm turned about Z0", Eigen::Vector3d(c, 90 * kDeg, 0.0), both,
-                   {SingularityType::kTypeI, SingularityType::kTypeII}});
+                   {SingularityType::kTypeI, SingularityType::kTypeII}, true});
   }
   // Regular: elbow bent by 70-100 deg, tip at least 0.1 m from the joint-1 axis (r = 0.47 m, 0.11 m).
   out.push_back({"a regular configuration", Eigen::Vector3d(0.7, 20 * kDeg, 70 * kDeg), Eigen::MatrixXd(3, 0), {}});
@@ -189,26 +193,35 @@ bool label(const Hw2Api& api, const Kinematics& k, const Eigen::Vector3d& u, Sin
   return true;
 }
 
-void types_at_the_problem_set_configuration(const Hw2Api& api, Check& check) {
-  const Kinematics k = at(p4::singular_q());
-  const std::string where = deg(p4::singular_q());
-  if (!label(api, k, Eigen::Vector3d::UnitZ(), SingularityType::kTypeI, where,
-             "Folding the elbow is a self-motion (Jv dq = 0 at first order) that lowers the tip: the elbow "
-             "lock is Type I",
-             check))
-    return;
-  if (!label(api, k, Eigen::Vector3d::UnitY(), SingularityType::kTypeII, where,
-             "No self-motion (joint 1, or the elbow folding in the X0-Z0 plane) moves the tip along Y0, even "
-             "at second order: the overhead lock is Type II",
-             check))
-    return;
-  label(api, k, Eigen::Vector3d::UnitX(), SingularityType::kNone, where,
-        "X0 is not singular: joints 2 and 3 move the tip along it", check);
+// The problem set's configuration first, then the same arm turned about Z0 by a random angle c
+// (cases()), so that types looked up for theta = (0, 90 deg, 0) alone cannot pass. Turning the
+// whole arm about Z0 turns its geometry with it: Z0 stays the elbow lock, the overhead lock is
+// the normal n = (-sin c, cos c, 0) of the arm's plane (Y0 at c = 0), and the tip moves along
+// the plane's horizontal (cos c, sin c, 0) (X0 at c = 0).
+void types_of_the_straight_up_arm(const Hw2Api& api, Check& check) {
+  for (const Case& c : cases()) {
+    if (!c.straight_up) continue;
+    const Kinematics k = at(c.q);
+    const std::string where = deg(c.q) + " (" + c.what + ")";
+    if (!label(api, k, Eigen::Vector3d::UnitZ(), SingularityType::kTypeI, where,
+               "Folding the elbow is a self-motion (Jv dq = 0 at first order) that lowers the tip: the elbow "
+               "lock is Type I",
+               check))
+      return;
+    if (!label(api, k, plane_normal(c.q(0)), SingularityType::kTypeII, where,
+               "No self-motion (joint 1, or the elbow folding in the arm's plane) moves the tip across the plane, "
+               "even at second order: the overhead lock is Type II",
+               check))
+      return;
+    if (!label(api, k, Eigen::Vector3d(std::cos(c.q(0)), std::sin(c.q(0)), 0.0), SingularityType::kNone, where,
+               "The horizontal of the arm's plane is not singular: joints 2 and 3 move the tip along it", check))
+      return;
+  }
 }
 
 void types_elsewhere(const Hw2Api& api, Check& check) {
   for (const Case& c : cases()) {
-    if (c.q == p4::singular_q()) continue;  // the previous test
+    if (c.straight_up) continue;  // the previous test
     const std::string where = deg(c.q) + " (" + c.what + ")";
     const Kinematics k = at(c.q);
     for (Eigen::Index j = 0; j < c.singular.cols(); ++j) {
@@ -263,15 +276,30 @@ void law(const Hw2Api& api, Check& check) {
   }
 }
 
+// A closed-loop run with the pin of its law: the first tick, if any, at which the torque was
+// not expected_torque() at that tick's State and Goal.
+struct Run {
+  p4::Result result;
+  LawPin pin{kLawTol};
+};
+
 // The closed-loop runs (each ~0.1 s), cached per implementation (Hw2Api::identity) and target.
-const p4::Result& run(const Hw2Api& api, Target target) {
-  static std::map<std::pair<std::uint64_t, int>, p4::Result> cache;
+const Run& run(const Hw2Api& api, Target target) {
+  static std::map<std::pair<std::uint64_t, int>, Run> cache;
   const auto key = std::make_pair(api.identity, static_cast<int>(target));
   auto it = cache.find(key);
   if (it == cache.end()) {
     scenarios::RunOptions options;
     options.duration = p4::kDuration;
-    it = cache.emplace(key, p4::run(target, api.p4.control, options)).first;
+    Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
+    const auto pinned = [control = api.p4.control, &pin = made.pin](Target aim, const hw2::p4::State& s,
+                                                                    const hw2::p4::Goal& goal) {
+      const Eigen::Vector3d tau = control(aim, s, goal);
+      pin.see(s.t, expected_torque(aim, s, goal), tau);
+      return tau;
+    };
+    made.result = p4::run(target, pinned, options);
+    it = cache.emplace(key, std::move(made)).first;
   }
   return it->second;
 }
@@ -300,9 +328,14 @@ std::string millimetres(double metres) {
 }
 
 void reaches(Target target, const Hw2Api& api, Check& check) {
-  const p4::Result& mine = run(api, target);
+  const Run& run_of_mine = run(api, target);
+  const p4::Result& mine = run_of_mine.result;
   const p4::Result& plain = run_plain(target);
   if (!check.that(mine.failure.empty(), "the run stopped early: " + mine.failure)) return;
+  if (!run_of_mine.pin.check(check, "your controller " + p4::describe(target),
+                             "Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p) + N^T (A (-kpj (q - q_d) - kvj dq) + g) "
+                             "with the target's potential"))
+    return;
   const std::string goal =
       std::string("the target 10 cm ") + (target == Target::kAlongZ0 ? "down " : "") + p4::describe(target);
   if (!check.that(mine.summary.reach_time >= 0.0,
@@ -345,9 +378,12 @@ Problem problem_4() {
               {"iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0", 2,
                "The moving directions are the other columns of U; the rotation axes come from the SVD of Jw.",
                orthogonal_directions},
-              {"iv. at theta = (0, 90 deg, 0) the elbow lock Z0 is Type I and the overhead lock Y0 Type II", 2,
-               "Test the self-motions only: the null-space basis Nb of Jv, then C = Nb^T H_u Nb.",
-               types_at_the_problem_set_configuration},
+              {"iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I elbow lock along "
+               "Z0 and a Type II overhead lock across its plane",
+               2,
+               "Test the self-motions only: the null-space basis Nb of Jv, then C = Nb^T H_u Nb, from the Kinematics "
+               "given (the arm may be turned about Z0).",
+               types_of_the_straight_up_arm},
               {"iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one", 2,
                "The type is a property of the direction and the configuration: use H_u = sum_k u_k H[k] and the "
                "null space of Jv at that configuration.",
