@@ -106,11 +106,11 @@ find "$BUILD" \( -name '*-sol.dir' -o -name 'opspace_solutions.dir' \) -type d -
 # grader stages what the compiler needs into its own build folder under /tmp.
 chmod -R go= "$SOURCE"
 chmod go= "$ROOT"/run_autograder "$ROOT"/setup.sh "$ROOT"/setup-*.log 2> /dev/null || true
-# The grader copies the library's headers and archives (the toolchain's visible= paths) into
+# The grader copies the library's headers and archives (the toolchain's headers= and archive= paths) into
 # its build folder under /tmp, modes included, for the compiler that runs as $RUNNER_USER: those
 # files stay readable (they are the library students have); the folders above them do not.
 while IFS='=' read -r key value; do
-  if [ "$key" = visible ] && [ -e "$value" ]; then chmod -R a+rX "$value"; fi
+  if { [ "$key" = headers ] || [ "$key" = archive ]; } && [ -e "$value" ]; then chmod -R a+rX "$value"; fi
 done < "$BUILD/grader/runner-toolchain.txt"
 
 # --- 6. prove the lockdown and grade the stubs --------------------------------------------------

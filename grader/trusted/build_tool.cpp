@@ -13,8 +13,8 @@
 
 namespace opspace::grading {
 
-ToolResult run_tool(const std::vector<std::string>& argv, const std::string& work_dir, const BuildSettings& settings,
-                    std::size_t max_output) {
+ToolResult run_tool(const std::vector<std::string>& argv, const std::string& work_dir,
+                    const std::vector<std::string>& visible, const BuildSettings& settings, std::size_t max_output) {
   int out[2];
   if (pipe2(out, O_CLOEXEC) != 0) throw std::runtime_error("the grader could not create a pipe");
   SandboxSpec spec;
@@ -22,7 +22,8 @@ ToolResult run_tool(const std::vector<std::string>& argv, const std::string& wor
   spec.env = {"PATH=/usr/bin:/bin", "LANG=C", "LC_ALL=C", "TMPDIR=/tmp"};
   spec.work_dir = work_dir;
   spec.work_dir_writable = true;
-  spec.user = settings.user;
+  spec.visible = visible;
+  spec.account = settings.account;
   spec.isolate = settings.isolate;
   // A compiler on one exercise file: well under 2 GiB and a minute on a laptop; a template
   // explosion in a student's file stops at these.
@@ -30,10 +31,11 @@ ToolResult run_tool(const std::vector<std::string>& argv, const std::string& wor
   spec.limits.cpu_seconds = static_cast<unsigned long long>(settings.timeout);
   spec.limits.file_size = 256ull << 20;
   spec.limits.open_files = 256;
-  // No process limit: RLIMIT_NPROC counts every process of the sandbox user, so a runner's fork
-  // flood in a concurrent grading (regrade --jobs) would make this compiler unable to start
-  // cc1plus. The compiler forks a fixed few processes whatever the file says.
-  spec.limits.processes = 0;
+  // RLIMIT_NPROC counts every process of the sandbox's account: with an account of the grading's
+  // own, only this grading's (the compiler forks a fixed few: driver, cc1plus, as; collect2, ld;
+  // the builds of up to one per core at once). A shared account (--sandbox-user) has no limit
+  // here, since a concurrent grading's fork flood would keep the compiler from starting.
+  spec.limits.processes = settings.account.own ? 64 : 0;
   const int null_in = open("/dev/null", O_RDONLY | O_CLOEXEC);
   spec.fds = {{0, null_in}, {1, out[1]}, {2, out[1]}};
   Sandboxed program;

@@ -19,9 +19,10 @@ struct ToolResult {
   bool cut = false;    ///< the output was longer than that
 };
 
-/// Runs `argv` in the sandbox as `settings` says (`work_dir` writable), within
-/// settings.timeout, keeping at most `max_output` bytes of what it writes.
-ToolResult run_tool(const std::vector<std::string>& argv, const std::string& work_dir, const BuildSettings& settings,
-                    std::size_t max_output);
+/// Runs `argv` in the sandbox as `settings` says, within settings.timeout, keeping at most
+/// `max_output` bytes of what it writes. It sees the system's folders, `visible` (read-only)
+/// and `work_dir`, the only folder it may write (owned by the sandbox's account).
+ToolResult run_tool(const std::vector<std::string>& argv, const std::string& work_dir,
+                    const std::vector<std::string>& visible, const BuildSettings& settings, std::size_t max_output);
 
 }  // namespace opspace::grading

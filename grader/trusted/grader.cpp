@@ -45,6 +45,9 @@ constexpr double kDefaultTimeout = 30.0;
 const std::vector<std::string> kRunnerEnv = {};
 #endif
 
+// The exit code of a grader that refused to run code where the sandbox cannot be built.
+constexpr int kExitUnprotected = 3;
+
 // Writes through a temporary file and a rename: a reader sees the old file or the whole new one.
 template <typename Writer>
 bool write_file(const std::string& path, const char* what, Writer writer) {
@@ -148,13 +151,20 @@ void apply_oracles(ProblemResult& result, const BuiltRunner& built) {
 }
 
 ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, const std::string& run_dir,
-                            const GraderOptions& options, Protections& protections, bool& started) {
+                            const GraderOptions& options, const Account& account, Protections& protections,
+                            bool& started) {
   if (!built.ok) return not_built(problem, built);
-  const std::string binary = run_dir + "/runner-" + problem.key;
+  // A folder of its own, holding its runner and nothing else: no other problem's runner (built
+  // from the same student's other files, under other rules) is in its view.
+  const std::string folder = run_dir + "/" + problem.key;
+  const auto readable = fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                        fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec;
+  fs::create_directory(folder);
+  fs::permissions(folder, readable | fs::perms::owner_write);
+  const std::string binary = folder + "/runner-" + problem.key;
   fs::copy_file(built.binary, binary, fs::copy_options::overwrite_existing);
-  fs::permissions(binary, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                              fs::perms::others_read | fs::perms::others_exec);
-  RunnerProcess runner(RunnerConfig{binary, run_dir, options.user, options.isolate, kRunnerEnv});
+  fs::permissions(binary, readable);
+  RunnerProcess runner(RunnerConfig{binary, folder, account, options.isolate, kRunnerEnv, built.runtime});
   const Hw2Api api = remote_api(problem.key, runner);
   ProblemResult out;
   out.problem = &problem;
@@ -186,14 +196,39 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     std::cerr << argv[0] << ": --no-isolation would run a student's code as root: refused\n";
     return 2;
   }
-  if (options.user.empty()) options.user = default_sandbox_user();
+  become_subreaper();
+  clean_up_when_interrupted();
+  Account account;
+  try {
+    account = options.isolate ? grading_account(options.user) : Account{};
+  } catch (const std::exception& e) {
+    std::cerr << argv[0] << ": " << e.what() << "\n";
+    return 2;
+  }
+  // The sandbox must hold whole before anyone's code is compiled or run: where it cannot (no
+  // namespaces), the code graded would run with the grader's rights, next to other students'
+  // files and grades. Only an explicit --unprotected grades there, and every report says so.
+  std::string unprotected;
+  if (!options.isolate) {
+    unprotected = "the sandbox is off (--no-isolation)";
+  } else if (std::string missing; !sandbox_complete(account, missing)) {
+    if (!options.allow_unprotected && !options.check_sandbox) {
+      std::cerr << argv[0] << ": refused: the sandbox cannot be built here (missing: " << missing
+                << "), so the code graded would run with this grader's rights. Grade your own files with "
+                   "--unprotected (scripts/grade does); grade others' only where the sandbox holds (docs/grader.md)\n";
+      return kExitUnprotected;
+    }
+    unprotected = "the sandbox is incomplete here (missing: " + missing + ")";
+  }
+  if (options.check_sandbox) {
+    std::cout << (unprotected.empty() ? "sandbox: complete" : "sandbox: " + unprotected) << "\n";
+    return unprotected.empty() ? 0 : kExitUnprotected;
+  }
   if (options.seed == 0) {
     std::random_device device;
     options.seed = (static_cast<std::uint64_t>(device()) << 20 ^ device()) % 1000000000ull + 1;
   }
   set_run_seed(options.seed);
-  become_subreaper();
-  clean_up_when_interrupted();
 
   const std::vector<Problem> suite = graded_suite();
   std::vector<const Problem*> chosen;
@@ -211,11 +246,13 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     std::cerr << "hw2-grade: " << e.what() << "\n";
     return 1;
   }
+  if (!unprotected.empty())
+    std::cout << "UNPROTECTED: " << unprotected << ": the code graded ran with this grader's rights\n";
   std::cout << "opspace grader: problem set 2, " << options.exercises << " (seed " << options.seed << ")\n"
             << std::flush;
   const auto start = std::chrono::steady_clock::now();
   std::cerr << "building the runners of " << chosen.size() << " problem(s)...\n";
-  const BuildSettings settings{OPSPACE_GRADING_CACHE, options.user, options.isolate, 180.0};
+  const BuildSettings settings{OPSPACE_GRADING_CACHE, account, options.isolate, 180.0};
   const std::vector<BuiltRunner> built = build_all(chosen, toolchain, options, settings);
   const double build_seconds = since(start);
   for (std::size_t i = 0; i < chosen.size(); ++i) {
@@ -242,7 +279,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     std::cerr << "grading problem " << chosen[i]->key << "...\n";
     try {
-      results.push_back(grade_problem(*chosen[i], built[i], run_dir, options, protections, started));
+      results.push_back(grade_problem(*chosen[i], built[i], run_dir, options, account, protections, started));
     } catch (const std::exception& e) {
       BuiltRunner broken = built[i];
       broken.ok = false;
@@ -251,6 +288,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     }
   }
   run_folder.reset();
+  kill_account(account);
   const double grading_seconds = since(grading_start), seconds = since(start);
   print_report(std::cout, results);
   std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,

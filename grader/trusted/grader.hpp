@@ -26,7 +26,9 @@ struct GraderOptions {
   std::vector<std::string> hidden;  ///< tests whose name contains one of these are hidden
   bool isolate = true;              ///< the sandbox (false: debugging only)
   std::uint64_t seed = 0;           ///< random inputs; 0: draw a new seed
-  std::string user;                 ///< when root: the user that runs student code
+  std::string user;                 ///< when root: a named account that runs student code (empty: the grading's own)
+  bool allow_unprotected = false;   ///< grade even where the sandbox is incomplete (--unprotected)
+  bool check_sandbox = false;       ///< only say whether the sandbox holds whole (--check-sandbox)
 };
 
 /// Reads hw2-grade's command line into `options` (whose timeout is the default on entry).

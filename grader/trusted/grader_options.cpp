@@ -41,7 +41,8 @@ bool parse_timeout(const std::string& text, GraderOptions& options, const char* 
 
 int grader_usage(std::ostream& out, const char* program, double default_timeout, int code) {
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
-      << "          [--gradescope FILE] [--junit FILE] [--hidden TEXT]... [--sandbox-user NAME] [--no-isolation]\n"
+      << "          [--gradescope FILE] [--junit FILE] [--hidden TEXT]... [--sandbox-user NAME] [--unprotected]\n"
+      << "          [--no-isolation]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
   for (const Problem& p : graded_suite()) {
@@ -56,10 +57,15 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "  --gradescope   also write Gradescope's results.json to FILE\n"
       << "  --junit        also write JUnit XML to FILE\n"
       << "  --hidden       mark the tests whose name contains TEXT hidden in results.json\n"
-      << "  --sandbox-user when run as root: the unprivileged user that runs student code\n"
-      << "                 (default: opspace-runner if it exists, else nobody)\n"
+      << "  --sandbox-user when run as root: a named account runs student code, shared with any\n"
+      << "                 grading running at once (default: an account of this grading's own)\n"
+      << "  --unprotected  grade even where the sandbox is incomplete (no namespaces): the code\n"
+      << "                 graded runs with the grader's rights; for your own files only\n"
+      << "  --check-sandbox say whether the sandbox holds whole here, and grade nothing\n"
+      << "                 (exit 0 if it does, 3 if not)\n"
       << "  --no-isolation run the student's code without the sandbox (debugging only)\n"
-      << "Exit code 0 whenever grading ran, whatever the score.\n";
+      << "Exit code 0 whenever grading ran, whatever the score; 3 when it refused to run code\n"
+      << "where the sandbox cannot be built (see --unprotected).\n";
   return code;
 }
 
@@ -103,6 +109,10 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
       options.hidden.push_back(argv[++i]);
     } else if (arg == "--sandbox-user" && has_value) {
       options.user = argv[++i];
+    } else if (arg == "--check-sandbox") {
+      options.check_sandbox = true;
+    } else if (arg == "--unprotected") {
+      options.allow_unprotected = true;
     } else if (arg == "--no-isolation") {
       options.isolate = false;
     } else {

@@ -1,6 +1,5 @@
 #include "runner_build.hpp"
 
-#include <pwd.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,6 +16,7 @@
 #include "interrupt.hpp"
 #include "library_answers.hpp"
 #include "runner_process.hpp"
+#include "runtime_files.hpp"
 #include "sandbox.hpp"
 #include "sha256.hpp"
 #include "student_text.hpp"
@@ -32,18 +32,28 @@ constexpr std::size_t kMaxToolOutput = 1u << 16;  // what is kept of the compile
 constexpr std::size_t kMaxWarnings = 1500;        // what the report shows of the warnings
 constexpr std::size_t kMaxSymbolList = 64u << 20;  // nm of a runner: 5-15 kB (--gc-sections)
 
-void make_owned(const std::string& path, const std::string& user) {
-  if (user.empty() || geteuid() != 0) return;
-  const passwd* pw = getpwnam(user.c_str());
-  if (!pw || chown(path.c_str(), pw->pw_uid, pw->pw_gid) != 0)
-    throw std::runtime_error("cannot give the build folder to user " + user);
+void make_owned(const std::string& path, const Account& account) {
+  if (account.uid == 0 || geteuid() != 0) return;
+  if (chown(path.c_str(), account.uid, account.gid) != 0)
+    throw std::runtime_error("cannot give a build folder to " + account.name);
 }
 
-// The library's headers and archives, copied into the build folder (2 MB): the compiler then
-// needs to see nothing of the repository, whatever the sandbox could hide or not (a chroot
-// without namespaces, a repository under a folder the sandbox user cannot enter). Files are
+// A folder of the build, made by the grader: `mode` 0755 for what the stage reads, or 0700 and
+// given to the sandbox's account for what it writes (its output, and nothing else).
+std::string make_folder(const std::string& path, bool writable, const Account& account) {
+  fs::create_directories(path);
+  fs::permissions(path, writable ? fs::perms::owner_all
+                                 : fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                       fs::perms::others_read | fs::perms::others_exec);
+  if (writable) make_owned(path, account);
+  return path;
+}
+
+// The library's headers or archives, copied into the build folder: the stage then needs to see
+// nothing of the repository, whatever the sandbox could hide or not (a chroot without
+// namespaces, a repository under a folder the sandbox's account cannot enter). Files are
 // hard-linked where the file system allows it (the precompiled Eigen is 95 MB), copied otherwise;
-// a link is as read-only to the sandbox user as the grader's file it links to.
+// a link is as read-only to the sandbox's account as the grader's file it links to.
 struct Staged {
   std::vector<std::pair<std::string, std::string>> map;  // original path -> its copy
   std::string rewrite(std::string arg) const {
@@ -55,13 +65,12 @@ struct Staged {
   }
 };
 
-Staged stage(const Toolchain& toolchain, const std::string& work) {
+Staged stage(std::vector<std::string> paths, const std::string& kit) {
   Staged staged;
-  std::vector<std::string> paths = toolchain.visible;
   std::sort(paths.begin(), paths.end(), [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
   for (std::size_t i = 0; i < paths.size(); ++i) {
     const fs::path from(paths[i]);
-    const fs::path dir = fs::path(work) / "kit" / std::to_string(i);
+    const fs::path dir = fs::path(kit) / std::to_string(i);
     fs::create_directories(dir);
     const fs::path to = fs::is_directory(from) ? dir : dir / from.filename();
     std::error_code linked;
@@ -74,6 +83,21 @@ Staged stage(const Toolchain& toolchain, const std::string& work) {
     staged.map.emplace_back(paths[i], to.string());
   }
   return staged;
+}
+
+// A copy of `from` the grader owns, read-only to everyone: what the next stage reads is what the
+// last one wrote, and nothing the sandbox's account can change since.
+// A file a stage wrote, and no link: the grader reads it with its own rights, which must not
+// follow a link to a file the stage could not see.
+bool written_file(const std::string& path) {
+  struct stat s {};
+  return lstat(path.c_str(), &s) == 0 && S_ISREG(s.st_mode) && s.st_nlink == 1;
+}
+
+void copy_read_only(const std::string& from, const std::string& to) {
+  if (!written_file(from)) throw std::runtime_error(from + " is not a file the stage wrote");
+  fs::copy_file(from, to, fs::copy_options::overwrite_existing);
+  fs::permissions(to, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
 }
 
 const std::vector<std::string>* inputs_of(const Toolchain& toolchain, const std::string& key) {
@@ -126,7 +150,8 @@ bool load_report(const std::string& path, BuiltRunner& built) {
 // was longer than kMaxSymbolList: it is kept whole or not at all, since a cut one could hide one.
 bool add_answers(const Toolchain& toolchain, const std::string& key, const std::string& which, const std::string& file,
                  const std::string& work, const BuildSettings& settings, BuiltRunner& built) {
-  const ToolResult nm = run_tool({toolchain.nm, "-C", "-P", which, file}, work, settings, kMaxSymbolList);
+  const std::string folder = fs::path(file).parent_path().string();
+  const ToolResult nm = run_tool({toolchain.nm, "-C", "-P", which, file}, work, {folder}, settings, kMaxSymbolList);
   if (nm.timed_out || !WIFEXITED(nm.status) || WEXITSTATUS(nm.status) != 0 || nm.cut) return false;
   for (const std::string& answer : answers_among(key, symbol_names(nm.output)))
     if (std::find(built.answers.begin(), built.answers.end(), answer) == built.answers.end()) built.answers.push_back(answer);
@@ -174,7 +199,8 @@ Toolchain load_toolchain(const std::string& path) {
     if (key == "compile") t.compile.push_back(value);
     else if (key == "link") t.link.push_back(value);
     else if (key == "include") t.include_roots.push_back(value);
-    else if (key == "visible") t.visible.push_back(value);
+    else if (key == "headers") t.headers.push_back(value);
+    else if (key == "archive") t.archives.push_back(value);
     else if (key == "nm") t.nm = value;
     else if (key.rfind("inputs-", 0) == 0) {
       const std::string problem = key.substr(7);
@@ -208,32 +234,48 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
     return built;
   }
 
+  // The cache is the grader's alone: no account of a sandbox reads or writes it.
   const std::string cached = settings.cache_dir + "/runner-" + key + "-" + cache_key(toolchain, key, *inputs, text);
   fs::create_directories(settings.cache_dir);
+  fs::permissions(settings.cache_dir, fs::perms::owner_all);
   if (fs::exists(cached) && load_report(cached + ".report", built)) {
     built.ok = true;
     built.cached = true;
     built.binary = cached;
     match_oracles(key, built);
+    try {
+      built.runtime = runtime_files(cached);
+    } catch (const std::exception& e) {
+      built = BuiltRunner{};
+      built.error = std::string("the grader could not read its runner: ") + e.what();
+    }
     return built;
   }
 
+  // One folder per stage. The stage reads folders the grader wrote (read-only to it) and writes
+  // only its own; the next stage reads the grader's copy of what it wrote. The source compiled
+  // is `text`, the bytes the cache key was taken from.
   const TemporaryFolder folder("/tmp/opspace-build-");
   const std::string& work = folder.path();
+  fs::permissions(work, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+  const std::string source_dir = make_folder(work + "/source", false, settings.account);
+  const std::string compiled = make_folder(work + "/compiled", true, settings.account);
+  const std::string objects = make_folder(work + "/objects", false, settings.account);
+  const std::string linked = make_folder(work + "/linked", true, settings.account);
   const std::string file = fs::path(shown_as).filename().string();
-  const std::string work_file = work + "/" + file;
+  const std::string work_file = source_dir + "/" + file;
   std::ofstream(work_file, std::ios::binary) << text;
-  const Staged staged = stage(toolchain, work);
-  make_owned(work, settings.user);
-  make_owned(work_file, settings.user);
+  fs::permissions(work_file, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  const Staged headers = stage(toolchain.headers, make_folder(work + "/headers", false, settings.account));
   std::vector<std::string> roots;
-  for (const std::string& root : toolchain.include_roots) roots.push_back(staged.rewrite(root));
+  for (const std::string& root : toolchain.include_roots) roots.push_back(headers.rewrite(root));
 
-  // Compile.
+  // Compile: the source and the headers, no archive of the library and no other file of this
+  // grading (an .incbin or #embed reaches only what this stage sees).
   std::vector<std::string> compile;
-  for (const std::string& arg : toolchain.compile) compile.push_back(staged.rewrite(arg));
-  compile.insert(compile.end(), {"-c", work_file, "-o", work + "/exercise.o", "-MD", "-MF", work + "/exercise.d"});
-  const ToolResult cc = run_tool(compile, work, settings, kMaxToolOutput);
+  for (const std::string& arg : toolchain.compile) compile.push_back(headers.rewrite(arg));
+  compile.insert(compile.end(), {"-c", work_file, "-o", compiled + "/exercise.o", "-MD", "-MF", compiled + "/exercise.d"});
+  const ToolResult cc = run_tool(compile, compiled, {source_dir, work + "/headers"}, settings, kMaxToolOutput);
   built.warnings = warnings_of(cc.output, work_file, shown_as, kMaxWarnings);
   if (cc.timed_out) {
     built.error = "compiling " + shown_as + " took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s";
@@ -244,39 +286,60 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
     if (built.error.empty()) built.error = "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")";
     return built;
   }
-  built.error = check_includes(work + "/exercise.d", work, shown_as, roots);
+  built.error = written_file(compiled + "/exercise.d")
+                    ? check_includes(compiled + "/exercise.d", source_dir, shown_as, roots)
+                    : "the compiler left no list of what " + shown_as + " included";
   if (!built.error.empty()) return built;
+  const std::string object = objects + "/exercise.o";
+  try {
+    copy_read_only(compiled + "/exercise.o", object);
+  } catch (const std::exception&) {
+    built.error = "the compiler left no object file for " + shown_as;
+    return built;
+  }
 
   // The answers the file refers to, by any kind of reference ("U", or "w" and "v" for a weak or
   // aliased declaration, which pull nothing into the link but name what the file reaches for).
-  if (!add_answers(toolchain, key, "--undefined-only", work + "/exercise.o", work, settings, built)) {
+  if (!add_answers(toolchain, key, "--undefined-only", object, linked, settings, built)) {
     built.error = "the grader could not list the functions " + shown_as + " refers to";
     return built;
   }
 
-  // Link with the problem's runner loop and the library.
+  // Link the grader's copy of the object with the problem's runner loop and the library.
+  // Of the archives, this problem's inputs only (its runner loop, the library).
+  std::vector<std::string> own_archives;
+  for (const std::string& archive : toolchain.archives)
+    if (std::find(inputs->begin(), inputs->end(), archive) != inputs->end()) own_archives.push_back(archive);
+  const Staged archives = stage(own_archives, make_folder(work + "/archives", false, settings.account));
   std::vector<std::string> link = toolchain.link;
-  link.push_back(work + "/exercise.o");
-  for (const std::string& input : *inputs) link.push_back(staged.rewrite(input));
-  link.insert(link.end(), {"-o", work + "/runner"});
-  const ToolResult ld = run_tool(link, work, settings, kMaxToolOutput);
+  link.push_back(object);
+  for (const std::string& input : *inputs) link.push_back(archives.rewrite(input));
+  link.insert(link.end(), {"-o", linked + "/runner"});
+  const ToolResult ld = run_tool(link, linked, {objects, work + "/archives"}, settings, kMaxToolOutput);
   if (ld.timed_out || !WIFEXITED(ld.status) || WEXITSTATUS(ld.status) != 0) {
-    built.error = first_error(ld.output, work + "/exercise.o", shown_as, roots, "linker");
+    built.error = first_error(ld.output, object, shown_as, roots, "linker");
     if (built.error.empty()) built.error = "linking the runner of " + shown_as + " failed";
     built.error = "linking failed: " + built.error;
     return built;
   }
+  const std::string runner = objects + "/runner";
+  try {
+    copy_read_only(linked + "/runner", runner);
+    built.runtime = runtime_files(runner);
+  } catch (const std::exception& e) {
+    built.error = std::string("the grader could not read the runner it linked: ") + e.what();
+    return built;
+  }
   // What the runner holds of the library's answers, by whatever route they came in: its own
   // symbols (library_answers.hpp).
-  if (!add_answers(toolchain, key, "--defined-only", work + "/runner", work, settings, built)) {
+  if (!add_answers(toolchain, key, "--defined-only", runner, linked, settings, built)) {
     built.error = "the grader could not list what the runner of " + shown_as + " holds";
     return built;
   }
   match_oracles(key, built);
   const std::string tmp = temporary(cached);
-  fs::copy_file(work + "/runner", tmp, fs::copy_options::overwrite_existing);
-  fs::permissions(tmp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                           fs::perms::others_read | fs::perms::others_exec);
+  fs::copy_file(runner, tmp, fs::copy_options::overwrite_existing);
+  fs::permissions(tmp, fs::perms::owner_read | fs::perms::owner_exec);
   fs::rename(tmp, cached);
   save_report(cached + ".report", built);
   built.ok = true;

@@ -1,14 +1,18 @@
 /// @file runner_build.hpp
-/// Building a problem's runner from one exercise file, in the sandbox: compile (the student's
-/// warnings shown, never fatal), check what the file included, link with that problem's runner
-/// loop, and list which of the library's answers the runner holds (library_answers.hpp). A failure costs that problem only and is
-/// reported with the file, the line and the compiler's first error.
+/// Building a problem's runner from one exercise file, each stage in the sandbox and seeing only
+/// what it needs (docs/grader.md, "What each stage sees"): compile the file (a copy the grader
+/// wrote, read-only, with the headers and never an archive; the student's warnings shown, never
+/// fatal), check what it included, link the object (the grader's copy) with that problem's
+/// runner loop and the library, and list which of the library's answers the runner holds
+/// (library_answers.hpp). A failure costs that problem only and is reported with the file, the
+/// line and the compiler's first error.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "library_answers.hpp"
+#include "sandbox.hpp"
 
 namespace opspace::grading {
 
@@ -19,7 +23,8 @@ struct Toolchain {
   /// Per problem key: the link inputs after the object (the runner loop, the library).
   std::vector<std::pair<std::string, std::vector<std::string>>> inputs;
   std::vector<std::string> include_roots;  ///< folders a student's file may include from
-  std::vector<std::string> visible;        ///< what the compiler and linker must see (read-only)
+  std::vector<std::string> headers;        ///< what the compiler must see of this build (read-only)
+  std::vector<std::string> archives;       ///< what the linker must see of this build (read-only)
   std::string nm;                          ///< the nm program
   std::string fingerprint;                 ///< changes when any of the above changes, or the grader is rebuilt
 };
@@ -29,8 +34,8 @@ Toolchain load_toolchain(const std::string& path);
 
 /// Where and how to build.
 struct BuildSettings {
-  std::string cache_dir;   ///< built runners are kept here, by the hash of their inputs
-  std::string user;        ///< when the grader is root: the user that compiles
+  std::string cache_dir;   ///< built runners are kept here, by the hash of their inputs (the grader's alone)
+  Account account;         ///< when the grader is root: the account that compiles
   bool isolate = true;     ///< the sandbox (false: debugging only)
   double timeout = 180.0;  ///< seconds for each of compiling and linking
 };
@@ -39,6 +44,7 @@ struct BuildSettings {
 struct BuiltRunner {
   bool ok = false;
   std::string binary;                 ///< the runner (in the cache), when ok
+  std::vector<std::string> runtime;   ///< the files it needs to start (runtime_files.hpp)
   std::string error;                  ///< why not: "exercises/p1b.cpp:12: error: ..."
   std::string warnings;               ///< the compiler's warnings, cut short
   std::vector<std::string> answers;   ///< library answers the runner holds: "opspace::pp::mass_matrix"

@@ -33,10 +33,11 @@ class StudentException : public std::runtime_error {
 /// How to start a runner.
 struct RunnerConfig {
   std::string binary;    ///< absolute path of the runner program
-  std::string work_dir;  ///< the folder it runs in (read-only), holding the binary
-  std::string user;      ///< when the grader is root: the unprivileged user it runs as
+  std::string work_dir;  ///< the folder it runs in (read-only), holding the binary and nothing else
+  Account account;       ///< when the grader is root: the unprivileged account it runs as
   bool isolate = true;   ///< the sandbox's namespaces, limits and filter (sandbox.hpp)
   std::vector<std::string> env;  ///< its environment (empty, or the sanitizers' options)
+  std::vector<std::string> runtime;  ///< the files it needs to start (runtime_files.hpp)
 };
 
 /// What the student's code printed during one test: the first bytes and the total count.
@@ -55,7 +56,14 @@ class RunnerProcess {
   RunnerProcess(const RunnerProcess&) = delete;
   RunnerProcess& operator=(const RunnerProcess&) = delete;
 
-  /// Starts a test: its deadline, and a clean slate (no failure, no prints).
+  /// How many times the test's limit a runner may keep the grader waiting, computing or not:
+  /// the limit itself counts the runner's CPU time, so that a machine kept busy by others
+  /// (another grading, another student's processes) does not make an honest runner late.
+  static constexpr double kWaitFactor = 5.0;
+
+  /// Starts a test and gives it a clean slate (no failure, no prints). The runner may spend
+  /// `timeout_seconds` of CPU time on the test, and keep the grader waiting until `deadline`
+  /// plus (kWaitFactor - 1) times that limit.
   void begin_test(std::chrono::steady_clock::time_point deadline, double timeout_seconds);
   /// Ends a test: kills the runner if it failed (the next test starts a new one); returns
   /// what the student's code printed during it.
@@ -88,8 +96,12 @@ class RunnerProcess {
   bool running_ = false;
   int request_fd_ = -1, answer_fd_ = -1, print_fd_ = -1;
   std::uint32_t sequence_ = 0;
+  // The runner's CPU time in seconds (its threads and the children it reaped), from /proc.
+  double cpu_seconds() const;
   std::chrono::steady_clock::time_point deadline_;
   double timeout_seconds_ = 0.0;
+  double cpu_at_begin_ = 0.0;  // the runner's CPU time when the test began (0: started since)
+  std::chrono::steady_clock::time_point last_cpu_check_;
   std::string failure_;
   Printed printed_;
   Protections protections_;

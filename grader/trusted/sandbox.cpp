@@ -22,6 +22,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "interrupt.hpp"
 #include "sandbox_plan.hpp"
 #include "sandbox_seccomp.hpp"
 
@@ -74,8 +75,8 @@ pid_t attempt(ChildPlan& plan, const SandboxSpec& spec, unsigned long flags, std
     // The child's pid as it sees it: 1, the init of its new PID namespace, or the one clone gave.
     std::string failed;
     try {
-      const std::vector<sock_filter> filter =
-          seccomp_filter((flags & CLONE_NEWPID) ? 1 : static_cast<pid_t>(pid));
+      const std::vector<sock_filter> filter = seccomp_filter(
+          (flags & CLONE_NEWPID) ? 1 : static_cast<pid_t>(pid), spec.runner ? plan.argv[0] : nullptr);
       const auto count = static_cast<std::uint32_t>(filter.size());
       std::string message(reinterpret_cast<const char*>(&count), sizeof count);
       message.append(reinterpret_cast<const char*>(filter.data()), filter.size() * sizeof(sock_filter));
@@ -185,6 +186,34 @@ Sandboxed spawn(const SandboxSpec& spec) {
     failure = why;
   }
   throw std::runtime_error("sandbox: cannot " + failure + " (" + spec.argv[0] + ")");
+}
+
+}  // namespace opspace::grading
+
+namespace opspace::grading {
+
+bool sandbox_complete(const Account& account, std::string& why) {
+  const TemporaryFolder folder("/tmp/opspace-probe-");
+  SandboxSpec spec;
+  spec.argv = {"/usr/bin/true"};
+  spec.work_dir = folder.path();
+  spec.account = account;
+  Sandboxed program;
+  try {
+    program = spawn(spec);
+  } catch (const std::exception& e) {
+    why = e.what();
+    return false;
+  }
+  int status = 0;
+  if (!wait_until(program, std::chrono::steady_clock::now() + std::chrono::seconds(30), status)) status = kill_all(program);
+  Protections on = program.protections;
+  // Without root, the user namespace is the separate identity: no uid of the grader's outside.
+  if (geteuid() != 0) on.own_user = on.pid_namespace;
+  why = on.missing();
+  if (why.empty() && !(WIFEXITED(status) && WEXITSTATUS(status) == 0))
+    why = "a trial program " + describe_wait_status(status);
+  return why.empty();
 }
 
 }  // namespace opspace::grading

@@ -35,6 +35,14 @@ struct Limits {
   unsigned long long processes = 0;      ///< RLIMIT_NPROC, only when it runs as its own user
 };
 
+/// The unprivileged identity a root grader runs student code as (sandbox_user.cpp).
+struct Account {
+  uid_t uid = 0;      ///< 0: none (the grader is not root, or runs without the sandbox)
+  gid_t gid = 0;
+  std::string name;   ///< for messages: "opspace-runner", "uid 3500007"
+  bool own = false;   ///< this grading's alone: no other grading runs as it at the same time
+};
+
 /// What to run and what it may see.
 struct SandboxSpec {
   std::vector<std::string> argv;  ///< argv[0]: absolute path of the program
@@ -44,8 +52,13 @@ struct SandboxSpec {
   std::vector<std::string> visible;  ///< absolute paths shown read-only besides /usr and /etc
   Limits limits;                  ///< resource limits
   std::vector<std::pair<int, int>> fds;  ///< {descriptor in the program, descriptor of the grader}
-  std::string user;               ///< when the grader is root: run as this user (must exist)
+  Account account;                ///< when the grader is root: run as this account
   bool isolate = true;            ///< false: only a new session and the descriptors (debugging)
+  /// A runner rather than a tool: it sees none of the system's folders, only `runtime` (the
+  /// files its program needs to start: loader and shared libraries) besides its work folder and
+  /// `visible`; it may not execve() anything but its own program, nor start a new session.
+  bool runner = false;
+  std::vector<std::string> runtime;  ///< absolute paths of files, shown read-only (a runner's)
 };
 
 /// Which protections a sandboxed program had.
@@ -86,9 +99,21 @@ bool wait_until(const Sandboxed& program, std::chrono::steady_clock::time_point 
 /// Makes this process a child subreaper and ignores SIGPIPE: call once at the grader's start.
 void become_subreaper();
 
-/// The user a root grader runs student code as: OPSPACE_SANDBOX_USER if set, else
-/// "opspace-runner" if it exists, else "nobody". Empty when the grader is not root.
-std::string default_sandbox_user();
+/// The account a root grader runs student code as. `named` empty: an account of this grading's
+/// own, a uid no other grading holds at the same time (a lock file per uid, under /run, held
+/// until the grader ends), where the kernel maps that range; else (or when `named` is given)
+/// the named user ("opspace-runner" if it exists, else "nobody"), which concurrent gradings
+/// share. Empty when the grader is not root. Throws std::runtime_error for an unknown or root user.
+Account grading_account(const std::string& named);
+
+/// Kills every process of `account` (a helper switches to it and sends SIGKILL to all it can):
+/// whatever this grading's student code left running anywhere. Only for an account of its own.
+void kill_account(const Account& account);
+
+/// Whether the sandbox holds everything it promises on this machine (a separate user when the
+/// grader is root, a PID namespace, no network, a private view of the files, the filter, the
+/// limits): a trial start of /bin/true. `why` names what was off.
+bool sandbox_complete(const Account& account, std::string& why);
 
 /// "killed by signal 11 (Segmentation fault)", "exited with code 3": a wait status in words.
 std::string describe_wait_status(int status);

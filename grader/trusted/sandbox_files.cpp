@@ -1,10 +1,12 @@
 // The sandboxed program's private view of the files, in its own mount namespace: a new root
-// (a small tmpfs) that shows only the system's folders (/usr, /etc, /bin, /lib...), four
-// devices, a private /tmp, the /proc of its own PID namespace, the paths the grader gives
-// (read-only) and its work folder; then chroot() into it. What it does not see (the grader's
-// own files, the home folders) it can neither read nor write. The parent plans the mounts
-// (plan_root(): lstat, readlink, the flags a remount must keep); the child makes them
-// (child_mounts()).
+// (a small tmpfs), four devices, a private /tmp, the /proc of its own PID namespace, the paths
+// the grader gives (read-only) and its work folder; then chroot() into it. A tool (the
+// compiler, the linker, nm) also sees the system's folders (/usr, /etc, /bin, /lib...); a
+// runner sees none of them, only the files its program needs to start (the loader and its
+// shared libraries, read-only): no compiler, no other program, nothing to execute but itself.
+// What it does not see (the grader's own files, the home folders, the runners' cache, another
+// problem's runner) it can neither read nor write. The parent plans the mounts (plan_root():
+// lstat, readlink, the flags a remount must keep); the child makes them (child_mounts()).
 #include <fcntl.h>
 #include <sys/mount.h>
 #include <sys/stat.h>
@@ -12,10 +14,12 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,22 +52,22 @@ std::vector<std::string> parents(const std::string& root, const std::string& pat
   return out;
 }
 
-void add_mount(ChildPlan& plan, const std::string& path, bool writable) {
+void add_mount(ChildPlan& plan, const std::string& path, bool writable, const std::string& source = "") {
   struct stat s {};
-  if (lstat(path.c_str(), &s) != 0) return;  // absent on this machine: nothing to show
+  if (lstat((source.empty() ? path : source).c_str(), &s) != 0) return;  // absent on this machine: nothing to show
   Mount m;
-  m.source = path;
+  m.source = source.empty() ? path : source;
   m.target = plan.root + path;
   m.writable = writable;
   m.make_dirs = parents(plan.root, path);
   if (S_ISLNK(s.st_mode)) {
     char target[4096];
-    const ssize_t n = readlink(path.c_str(), target, sizeof target - 1);
+    const ssize_t n = readlink(m.source.c_str(), target, sizeof target - 1);
     if (n <= 0) return;
     m.link.assign(target, static_cast<std::size_t>(n));
   } else {
     m.directory = S_ISDIR(s.st_mode);
-    m.flags = locked_flags(path);
+    m.flags = locked_flags(m.source);
     if (m.directory) m.make_dirs.push_back(m.target);
   }
   plan.mounts.push_back(m);
@@ -85,6 +89,10 @@ void remove_root() {
   if (g_root[0]) rmdir(g_root);
 }
 std::string root_mount_point() {
+  // Under a lock: the grader builds several runners at once, and two threads that both found
+  // no folder would each make one, and leave one behind.
+  static std::mutex lock;
+  const std::lock_guard<std::mutex> hold(lock);
   if (!g_root[0]) {
     // The grader's pid in the name, as in TemporaryFolder's (interrupt.hpp).
     std::string pattern = "/tmp/opspace-sandbox-" + std::to_string(getpid()) + "-XXXXXX";
@@ -101,10 +109,19 @@ std::string root_mount_point() {
 
 void plan_root(ChildPlan& plan, const SandboxSpec& spec) {
   plan.root = root_mount_point();
-  for (const char* system : {"/usr", "/etc", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"})
-    add_mount(plan, system, false);
+  if (!spec.runner) {
+    for (const char* system : {"/usr", "/etc", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"})
+      add_mount(plan, system, false);
+  } else {
+    // Each file at the path the loader looks for it, its content from the file the path
+    // resolves to: the folders above it are plain folders of the new root, not the system's.
+    for (const std::string& file : spec.runtime) {
+      char resolved[PATH_MAX];
+      if (realpath(file.c_str(), resolved)) add_mount(plan, file, false, resolved);
+    }
+  }
   for (const char* device : {"/dev/null", "/dev/zero", "/dev/urandom", "/dev/random"}) add_mount(plan, device, true);
-  add_special(plan, "/tmp", "tmpfs");
+  add_special(plan, "/tmp", spec.runner ? "tmpfs-noexec" : "tmpfs");
   if (plan.pid_namespace) add_special(plan, "/proc", "proc");
   for (const std::string& path : spec.visible) add_mount(plan, path, false);
   add_mount(plan, spec.work_dir, spec.work_dir_writable);
@@ -122,9 +139,9 @@ void child_mounts(const ChildPlan& plan) {
       if (symlink(m.link.c_str(), m.target.c_str()) != 0) child_fail(plan, "create a link in the new root");
       continue;
     }
-    if (m.source == "tmpfs") {
-      if (mount("tmpfs", m.target.c_str(), "tmpfs", MS_NOSUID | MS_NODEV, "size=512m,mode=1777") != 0)
-        child_fail(plan, "mount /tmp");
+    if (m.source == "tmpfs" || m.source == "tmpfs-noexec") {
+      const unsigned long flags = MS_NOSUID | MS_NODEV | (m.source == "tmpfs" ? 0 : MS_NOEXEC);
+      if (mount("tmpfs", m.target.c_str(), "tmpfs", flags, "size=512m,mode=1777") != 0) child_fail(plan, "mount /tmp");
       continue;
     }
     if (m.source == "proc") {

@@ -56,7 +56,7 @@ scmp_arg_cmp first_argument(scmp_compare op, scmp_datum_t a, scmp_datum_t b = 0)
 
 }  // namespace
 
-std::vector<sock_filter> seccomp_filter(pid_t self) {
+std::vector<sock_filter> seccomp_filter(pid_t self, const void* exec_path) {
   if (self <= 0) throw std::invalid_argument("seccomp filter: own pid must be positive");
   const std::unique_ptr<void, Release> owner(seccomp_init(SCMP_ACT_ALLOW));
   scmp_filter_ctx context = owner.get();
@@ -84,6 +84,14 @@ std::vector<sock_filter> seccomp_filter(pid_t self) {
     const scmp_arg_cmp block = first_argument(SCMP_CMP_MASKED_EQ, ~(size - 1), start);
     add(context, eperm, "kill", 1, &block);
     start += size;
+  }
+
+  if (exec_path) {
+    const scmp_arg_cmp other_path =
+        first_argument(SCMP_CMP_NE, static_cast<scmp_datum_t>(reinterpret_cast<std::uintptr_t>(exec_path)));
+    add(context, eperm, "execve", 1, &other_path);
+    add(context, eperm, "execveat", 0, nullptr);
+    add(context, eperm, "setsid", 0, nullptr);
   }
 
   // libseccomp 2.5 exports to a descriptor only: a memory file, read back.

@@ -10,7 +10,12 @@
 ///   namespaces);
 /// - kill(pid, sig): only to its own process group (pid 0) or to itself, else EPERM;
 ///   tgkill(tgid, ...): only to itself (abort() and raise() use it), else EPERM;
-/// - another architecture or ABI (x32 on x86_64, i386 through int 0x80) kills the process.
+/// - another architecture or ABI (x32 on x86_64, i386 through int 0x80) kills the process;
+/// - for a runner only: execve() only with the very path pointer the sandbox's own execve()
+///   passes (its program; after it, the new program's memory holds no such pointer unless it
+///   maps one there, and the runner's view of the files holds nothing else to execute),
+///   execveat() never, and no new session (setsid: the scheduler groups a session's processes,
+///   so that a runner's processes share one group's time rather than taking a group each).
 #pragma once
 
 #include <linux/filter.h>
@@ -22,8 +27,10 @@
 namespace opspace::grading {
 
 /// The filter, as a BPF program, for a process whose own pid, as it sees it, is `self` (1 in
-/// a new PID namespace). Throws std::runtime_error if libseccomp cannot build it.
-std::vector<sock_filter> seccomp_filter(pid_t self);
+/// a new PID namespace). `exec_path`: for a runner, the address of the path its execve() will
+/// pass (the only execve() allowed); null for a tool (the compiler starts its own programs).
+/// Throws std::runtime_error if libseccomp cannot build it.
+std::vector<sock_filter> seccomp_filter(pid_t self, const void* exec_path = nullptr);
 
 /// Installs the BPF program of `size` instructions in the calling process for good
 /// (no_new_privs, then the filter): only system calls, so a child between clone() and execve()

@@ -195,7 +195,7 @@ TEST_CASE("in the grader's sandbox the same calls are refused") {
   spec.work_dir = pattern;
   spec.visible = {OPSPACE_SECCOMP_PROBE};
   spec.fds = {{1, out[1]}};
-  spec.user = grading::default_sandbox_user();
+  spec.account = grading::grading_account("");
   const grading::Sandboxed program = grading::spawn(spec);
   close(out[1]);
   const std::string text = read_all(out[0]);
