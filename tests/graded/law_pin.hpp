@@ -43,9 +43,9 @@ class LawPin {
     char when[48];
     std::snprintf(when, sizeof when, "%.3f s", t_);
     return check.near(whose + "'s torque at t = " + when + " of the run", expected_, computed_, tol_,
-                      "The run must apply the problem set's law " + law +
-                          " at every tick: a behaviour earns points only for that law, so this measured test "
-                          "earns none (the law test says which term differs)");
+                      "Every tick of the run must apply the problem set's law " + law +
+                          ": a behaviour earns points only for that law, so this measured test earns none (the "
+                          "law test says which term differs)");
   }
 
  private:
