@@ -58,3 +58,21 @@ TEST_CASE("Stepping the iiwa while its tool pushes on a plane calls operator new
   CHECK_MESSAGE(touching_steps >= 100, "the tool should touch the plane in many steps, so that "
                                         "contacts are gathered; it did in " << touching_steps);
 }
+
+TEST_CASE("Stepping an iiwa with armature while it is pushed calls operator new zero times") {
+  // The armature's correction (opspace's forward dynamics at the four RK4 stages, and the
+  // push's joint torques) runs in workspaces sized when the simulation is built.
+  opspace::Model model = opspace::load_urdf(opspace::robot_path("iiwa7.urdf"));
+  for (auto& body : model.bodies) body.armature = 0.5;
+  opspace::Simulation sim(model);
+  sim.set_state(Eigen::VectorXd::Constant(7, 0.3), Eigen::VectorXd::Zero(7));
+  const Eigen::VectorXd tau = Eigen::VectorXd::Zero(7);
+  for (int i = 0; i < 10; ++i) sim.step(tau);
+  const long before = g_news.load();
+  for (int i = 0; i < 1000; ++i) {
+    sim.push(6, Eigen::Vector3d(1.0, 0.0, 0.0), sim.body_pose(6).translation());
+    sim.step(tau);
+  }
+  const long calls = g_news.load() - before;
+  CHECK_MESSAGE(calls == 0, "operator new was called " << calls << " times in 1000 steps");
+}

@@ -145,6 +145,18 @@ void Simulation::Impl::build() {
   delta_acc.resize(6 + n);
   omega.resize(n + 1);
   vel.resize(n + 1);
+  for (const Body& b : model.bodies) {
+    if (!(b.armature >= 0.0) || !std::isfinite(b.armature)) {
+      throw std::invalid_argument("opspace::Simulation: joint '" + b.joint_name + "' has armature " +
+                                  std::to_string(b.armature) + "; it must be a finite number >= 0");
+    }
+    has_armature = has_armature || b.armature > 0.0;
+  }
+  if (has_armature) {
+    generalized = armature_qdd = stage_q = stage_qdot = stage_qdd = Eigen::VectorXd::Zero(n);
+    push_jacobian = Matrix6Xd::Zero(6, n);
+    for (const Body& b : model.bodies) body_frame.push_back(model.frame_id(b.link_name));
+  }
   reserve_contacts();
   refresh_kinematics();
 }

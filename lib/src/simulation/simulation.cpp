@@ -137,6 +137,7 @@ Energy Simulation::energy() const {
     const Eigen::Vector3d I = s.principal[i].moments;
     e.kinetic += 0.5 * m * s.vel[i + 1].length2() + 0.5 * (I.array() * w.array().square()).sum();
     e.potential -= m * s.model.gravity.dot(to_eigen(s.mb->localPosToWorld(i, btVector3(0, 0, 0))));
+    e.kinetic += 0.5 * s.model.bodies[i].armature * s.qdot[i] * s.qdot[i];  // the rotor's
   }
   return e;
 }

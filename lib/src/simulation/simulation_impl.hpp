@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "../algorithms/small_decompositions.hpp"
+#include "opspace/algorithms/kinematics.hpp"
 
 static_assert(sizeof(btScalar) == 8,
               "Bullet must be the double-precision build (bullet-float64, BT_USE_DOUBLE_PRECISION)");
@@ -105,6 +106,16 @@ struct Simulation::Impl {
   std::vector<Wrench> wrenches;
   Wrench no_wrench;
 
+  // The armature (Body::armature), which Bullet's multibody has no term for: see
+  // apply_armature(). Sized only when a joint has one.
+  bool has_armature = false;
+  Data dynamics;                  // opspace's own dynamics of `model`
+  Eigen::VectorXd generalized;    // tau plus the pushes as joint torques
+  Matrix6Xd push_jacobian;        // J0 of a pushed body's centre of mass
+  Eigen::VectorXd armature_qdd;   // the armed acceleration the correction uses
+  Eigen::VectorXd stage_q, stage_qdot, stage_qdd;  // RK4 stages of the armed dynamics
+  std::vector<int> body_frame;    // frame index of each body's own link
+
   btAlignedObjectArray<btQuaternion> world_to_local;
   btAlignedObjectArray<btVector3> local_origin;
   btAlignedObjectArray<btScalar> scratch_r;
@@ -113,7 +124,7 @@ struct Simulation::Impl {
   btAlignedObjectArray<btScalar> unit_force, delta_acc;
   mutable btAlignedObjectArray<btVector3> omega, vel;
 
-  Impl(const Model& m, const SimulationSettings& s) : model(m), settings(s) {}
+  Impl(const Model& m, const SimulationSettings& s) : model(m), settings(s), dynamics(m) {}
   ~Impl();
   int dof() const { return model.dof(); }
 
@@ -131,6 +142,9 @@ struct Simulation::Impl {
   void gather_contacts();
   [[noreturn]] void fail(int joint, const std::string& cause);
   void step(const Eigen::Ref<const Eigen::VectorXd>& tau_requested);
+  // Adds to each joint torque the armature's share: -armature_i qdd_i, qdd from opspace's
+  // dynamics with the armature, (A + D) qdd = tau + pushes - b - g, at the step's start state.
+  void apply_armature();
 };
 
 }  // namespace opspace

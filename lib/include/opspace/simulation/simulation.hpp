@@ -11,6 +11,11 @@
 /// - RK4 integration by default (energy-conserving enough for 5 s runs), Euler on request;
 /// - no link damping, no sleeping, no silent velocity clamp, no self collision, joint position
 ///   limits are not enforced;
+/// - a joint's armature (Body::armature, the motor's reflected inertia), which Bullet's multibody
+///   has no term for, is applied as a joint-space correction: each step gives Bullet the torque
+///   tau - armature_i qdd_i, with qdd from opspace's dynamics with the armature over the step
+///   (at its start for Euler, exact; the RK4 average of its stages for RK4), so that Bullet's
+///   acceleration is the armed robot's; contact impulses see the robot without armature;
 /// - a torque beyond a joint's URDF effort limit is clamped to the limit and counted
 ///   (SimulationSummary::clamped_steps); an effort limit <= 0 means "no limit";
 /// - a state that is not finite, or a joint speed beyond SimulationSettings::max_joint_speed,
@@ -156,11 +161,13 @@ class Simulation {
   /// The same for the body that carries link `link`.
   const Wrench& contact_wrench(const std::string& link) const;
 
-  /// Kinetic and potential energy, from Bullet's link velocities and poses.
+  /// Kinetic and potential energy, from Bullet's link velocities and poses (the kinetic energy
+  /// includes the rotors' 1/2 armature_i qdot_i^2).
   Energy energy() const;
 
   /// Bullet's inverse mass matrix M^-1(q) at the current state, column by column from its
   /// articulated-body routines (for cross-checks; allocates nothing after the first call).
+  /// It is Bullet's own: without the joints' armature.
   void inverse_mass_matrix(Eigen::Ref<Eigen::MatrixXd> Minv);
 
   const SimulationSummary& summary() const;    ///< steps, time, clamped torques so far
