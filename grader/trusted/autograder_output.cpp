@@ -51,23 +51,56 @@ std::string feedback(const TestResult& r) {
   return text;
 }
 
-bool hidden_test(const std::string& name, const std::vector<std::string>& hidden) {
-  for (const std::string& h : hidden) {
-    if (!h.empty() && name.find(h) != std::string::npos) return true;
-  }
-  return false;
+// The grader's own failures begin so (runner_process.cpp, runner_build.cpp, grader.cpp): a
+// program it could not start, a pipe it could not create, a runner it could not build. A text
+// from the student's side never begins a finding or a failure (it is quoted inside one).
+bool grader_failed(const std::string& text) { return text.rfind("the grader could not ", 0) == 0; }
+
+// What the student reads of a hidden test's problem: when the hidden tests appear.
+std::string shown_when(const std::string& hidden_as) {
+  return hidden_as == "after_due_date" ? "after the due date" : "when your instructor publishes the grades";
 }
 
 }  // namespace
 
+int grader_faults(const std::vector<ProblemResult>& problems) {
+  int faults = 0;
+  for (const ProblemResult& p : problems) {
+    if (grader_failed(p.failure)) {
+      ++faults;
+      continue;
+    }
+    for (const TestResult& r : p.results) {
+      if (!r.interrupted) continue;
+      for (const std::string& f : r.findings) {
+        if (grader_failed(f)) {
+          ++faults;
+          break;
+        }
+      }
+    }
+  }
+  return faults;
+}
+
 void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds,
-                      const std::vector<std::string>& hidden) {
+                      const GradescopeSettings& settings) {
   double score = 0.0, max_score = 0.0;
   std::ostringstream summary;
   for (const ProblemResult& p : problems) {
     score += p.score;
     max_score += p.max_score;
-    summary << "Problem " << p.problem->key << ": " << p.score << " / " << p.max_score << "\n";
+    // The student's lines count the tests they see: a hidden test's points would tell them
+    // what it gave.
+    const ShownScore shown = shown_score(p, settings.hidden);
+    summary << "Problem " << p.problem->key << ": " << format_points(shown.score) << " / "
+            << format_points(shown.max_score);
+    if (shown.hidden_tests > 0) {
+      summary << " in the tests shown (" << shown.hidden_tests << " hidden test" << (shown.hidden_tests == 1 ? "" : "s")
+              << " of " << format_points(shown.hidden_points) << " points appear " << shown_when(settings.hidden_as)
+              << ")";
+    }
+    summary << "\n";
     if (!p.failure.empty()) {
       const std::size_t end = p.failure.find('\n');
       summary << "  " << p.failure.substr(0, end) << "\n";
@@ -78,18 +111,33 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
   Json tests = Json::array();
   for (const ProblemResult& p : problems) {
     for (const TestResult& r : p.results) {
-      const std::string name = p.problem->key + " " + r.test->name;
-      tests.push_back(Json{{"name", name},
+      tests.push_back(Json{{"name", p.problem->key + " " + r.test->name},
+                           {"name_format", "text"},
                            {"score", number(r.score)},
                            {"max_score", number(r.test->points)},
                            {"status", r.score >= r.test->points ? "passed" : "failed"},
-                           {"output", feedback(r)},
-                           {"visibility", hidden_test(name, hidden) ? "hidden" : "visible"}});
+                           {"output", html_escape(feedback(r))},
+                           {"output_format", "text"},
+                           {"visibility", is_hidden(p, r, settings.hidden) ? settings.hidden_as : "visible"}});
     }
   }
-  const Json results{{"score", number(score)},          {"max_score", number(max_score)},
-                     {"execution_time", number(seconds)}, {"output", summary.str()},
-                     {"visibility", "visible"},           {"tests", std::move(tests)}};
+  // The score is the whole grade, hidden tests included: it is what Gradescope's gradebook
+  // takes. A test marked after_due_date or after_published keeps the total from the student
+  // until then (Gradescope's autograder specification); the output's lines count the tests
+  // shown. Every text is "text" (shown as it is, never rendered) and HTML-escaped besides.
+  // extra_data.grader is the grader's own record, for scripts/regrade: the seed of the run and
+  // the tests or problems lost to the grader's own failures (never read from the student's text).
+  const Json results{{"score", number(score)},
+                     {"max_score", number(max_score)},
+                     {"execution_time", number(seconds)},
+                     {"output", html_escape(summary.str())},
+                     {"output_format", "text"},
+                     {"test_output_format", "text"},
+                     {"test_name_format", "text"},
+                     {"visibility", "visible"},
+                     {"stdout_visibility", "hidden"},
+                     {"extra_data", Json{{"grader", Json{{"seed", settings.seed}, {"grader_faults", grader_faults(problems)}}}}},
+                     {"tests", std::move(tests)}};
   // The texts are the student's, already escaped (student_text.hpp): replace, never throw on,
   // bytes that are not UTF-8, so that no text can stop the file from being written.
   out << results.dump(2, ' ', false, Json::error_handler_t::replace) << "\n";

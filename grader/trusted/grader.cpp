@@ -290,7 +290,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   run_folder.reset();
   kill_account(account);
   const double grading_seconds = since(grading_start), seconds = since(start);
-  print_report(std::cout, results);
+  print_report(std::cout, results, options.hidden);
   std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,
               grading_seconds, static_cast<unsigned long long>(options.seed),
               static_cast<unsigned long long>(options.seed));
@@ -305,7 +305,9 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   bool written = true;
   if (!options.gradescope_path.empty()) {
     written &= write_file(options.gradescope_path, "results.json",
-                          [&](std::ostream& out) { write_gradescope(out, results, seconds, options.hidden); });
+                          [&](std::ostream& out) {
+                            write_gradescope(out, results, seconds, {options.hidden, options.hidden_as, options.seed});
+                          });
   }
   if (!options.junit_path.empty()) {
     written &= write_file(options.junit_path, "JUnit XML", [&](std::ostream& out) { write_junit(out, results, seconds); });

@@ -24,6 +24,7 @@ struct GraderOptions {
   std::string gradescope_path;      ///< results.json, if not empty
   std::string junit_path;           ///< JUnit XML, if not empty
   std::vector<std::string> hidden;  ///< tests whose name contains one of these are hidden
+  std::string hidden_as = "after_published";  ///< their visibility in results.json (--hidden-visibility)
   bool isolate = true;              ///< the sandbox (false: debugging only)
   std::uint64_t seed = 0;           ///< random inputs; 0: draw a new seed
   std::string user;                 ///< when root: a named account that runs student code (empty: the grading's own)
@@ -42,11 +43,23 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
 /// The time limit of each test of problem `key`: its own (--timeout KEY=SECONDS), else --timeout's.
 double timeout_of(const GraderOptions& options, const std::string& key);
 
-/// Gradescope's results.json: score, max_score, execution_time, output, and tests[] with
-/// name, score, max_score, status, output and visibility ("hidden" when the test's name
-/// contains one of `hidden`, else "visible").
+/// What results.json hides, and the grader's record it carries (docs/grader.md).
+struct GradescopeSettings {
+  std::vector<std::string> hidden;            ///< tests whose "<key> <name>" contains one of these
+  std::string hidden_as = "after_published";  ///< their visibility: after_published or after_due_date
+  std::uint64_t seed = 0;                     ///< the run's seed (a retry replays it)
+};
+
+/// Gradescope's results.json: score (the whole grade), max_score, execution_time, output (one
+/// line per problem counting the tests shown), output_format "text", and tests[] with name,
+/// score, max_score, status, output and visibility (`hidden_as` for the hidden tests, else
+/// "visible"); every text HTML-escaped. extra_data.grader holds the seed and grader_faults().
 void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds,
-                      const std::vector<std::string>& hidden);
+                      const GradescopeSettings& settings);
+
+/// The tests and problems lost to the grader's own failures (a program it could not start, a
+/// runner it could not build), never to the student's code: scripts/regrade grades those again.
+int grader_faults(const std::vector<ProblemResult>& problems);
 
 /// JUnit XML: one <testsuite> per problem, one <testcase> per test, <failure> with the findings.
 void write_junit(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds);

@@ -42,7 +42,7 @@ bool parse_timeout(const std::string& text, GraderOptions& options, const char* 
 int grader_usage(std::ostream& out, const char* program, double default_timeout, int code) {
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
       << "          [--gradescope FILE] [--junit FILE] [--hidden TEXT]... [--sandbox-user NAME] [--unprotected]\n"
-      << "          [--no-isolation]\n"
+      << "          [--hidden-visibility WHEN] [--no-isolation]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
   for (const Problem& p : graded_suite()) {
@@ -56,7 +56,11 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "  --seed         replay the random inputs of an earlier run (its report prints the seed)\n"
       << "  --gradescope   also write Gradescope's results.json to FILE\n"
       << "  --junit        also write JUnit XML to FILE\n"
-      << "  --hidden       mark the tests whose name contains TEXT hidden in results.json\n"
+      << "  --hidden       hide from the student the tests whose name contains TEXT (repeatable):\n"
+      << "                 the report and results.json's lines count the others; the score, the\n"
+      << "                 gradebook's, counts all\n"
+      << "  --hidden-visibility after_published (default) or after_due_date: when Gradescope\n"
+      << "                 shows the hidden tests, and the total, to the student\n"
       << "  --sandbox-user when run as root: a named account runs student code, shared with any\n"
       << "                 grading running at once (default: an account of this grading's own)\n"
       << "  --unprotected  grade even where the sandbox is incomplete (no namespaces): the code\n"
@@ -107,6 +111,16 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
       options.junit_path = argv[++i];
     } else if (arg == "--hidden" && has_value) {
       options.hidden.push_back(argv[++i]);
+    } else if (arg == "--hidden-visibility" && has_value) {
+      // Gradescope's "hidden" would show the student a total holding the hidden tests' points
+      // (its specification: hidden tests are for tests worth nothing).
+      options.hidden_as = argv[++i];
+      if (options.hidden_as != "after_published" && options.hidden_as != "after_due_date") {
+        std::cerr << argv[0] << ": --hidden-visibility is after_published or after_due_date, not '"
+                  << options.hidden_as << "' (a hidden test with points would show in the total)\n";
+        exit_code = 2;
+        return false;
+      }
     } else if (arg == "--sandbox-user" && has_value) {
       options.user = argv[++i];
     } else if (arg == "--check-sandbox") {

@@ -27,6 +27,12 @@ void print_failure(std::ostream& out, const std::string& failure) {
   if (end != std::string::npos) out << quoted(failure.substr(end + 1));
 }
 
+// How many tests the report leaves out, and their points; never what they earned.
+std::string hidden_note(int tests, double points) {
+  return std::to_string(tests) + " hidden test" + (tests == 1 ? "" : "s") + " of " + format_points(points) +
+         " points not shown: they count in the grade your instructor publishes";
+}
+
 std::string status(const TestResult& r) {
   if (r.score >= r.test->points) return "PASS";
   return r.score > 0.0 ? "PART" : "FAIL";
@@ -45,11 +51,36 @@ ProblemResult grade(const Problem& problem, const Hw2Api& api) {
   return out;
 }
 
-void print_report(std::ostream& out, const std::vector<ProblemResult>& problems) {
-  double total = 0.0, total_max = 0.0;
+bool is_hidden(const ProblemResult& problem, const TestResult& test, const std::vector<std::string>& hidden) {
+  const std::string name = problem.problem->key + " " + test.test->name;
+  for (const std::string& h : hidden) {
+    if (!h.empty() && name.find(h) != std::string::npos) return true;
+  }
+  return false;
+}
+
+ShownScore shown_score(const ProblemResult& problem, const std::vector<std::string>& hidden) {
+  ShownScore out;
+  for (const TestResult& r : problem.results) {
+    if (is_hidden(problem, r, hidden)) {
+      ++out.hidden_tests;
+      out.hidden_points += r.test->points;
+    } else {
+      out.score += r.score;
+      out.max_score += r.test->points;
+    }
+  }
+  return out;
+}
+
+void print_report(std::ostream& out, const std::vector<ProblemResult>& problems, const std::vector<std::string>& hidden) {
+  double total = 0.0, total_max = 0.0, hidden_points = 0.0;
+  int hidden_tests = 0;
   for (const ProblemResult& p : problems) {
+    const ShownScore shown = shown_score(p, hidden);
     out << "\nProblem " << p.problem->key << ": " << p.problem->title << "\n";
     for (const TestResult& r : p.results) {
+      if (is_hidden(p, r, hidden)) continue;
       const std::string score = format_points(r.score) + "/" + format_points(r.test->points);
       out << "  " << status(r) << "  " << score << std::string(score.size() < 6 ? 6 - score.size() : 1, ' ')
           << r.test->name << "\n";
@@ -62,17 +93,24 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems)
     if (!p.failure.empty()) print_failure(out, p.failure);
     for (const std::string& note : p.notes) out << "  ! " << note << "\n";
     if (!p.warnings.empty()) out << "  compiler warnings (not counted):\n" << quoted(p.warnings);
-    out << "  Problem " << p.problem->key << ": " << format_points(p.score) << " / " << format_points(p.max_score)
-        << " points\n";
-    total += p.score;
-    total_max += p.max_score;
+    out << "  Problem " << p.problem->key << ": " << format_points(shown.score) << " / "
+        << format_points(shown.max_score) << " points";
+    if (shown.hidden_tests > 0) out << " in the tests shown (" << hidden_note(shown.hidden_tests, shown.hidden_points) << ")";
+    out << "\n";
+    total += shown.score;
+    total_max += shown.max_score;
+    hidden_tests += shown.hidden_tests;
+    hidden_points += shown.hidden_points;
   }
   out << "\nScore per problem:\n";
   for (const ProblemResult& p : problems) {
-    out << "  " << p.problem->key << "  " << format_points(p.score) << " / " << format_points(p.max_score) << "\n";
+    const ShownScore shown = shown_score(p, hidden);
+    out << "  " << p.problem->key << "  " << format_points(shown.score) << " / " << format_points(shown.max_score) << "\n";
   }
-  out << "Total: " << format_points(total) << " / " << format_points(total_max) << " points\n";
-  if (total == 0.0 && problems.size() > 1 && problems.front().problem->key == "1a") {
+  out << "Total: " << format_points(total) << " / " << format_points(total_max) << " points";
+  if (hidden_tests > 0) out << " in the tests shown (" << hidden_note(hidden_tests, hidden_points) << ")";
+  out << "\n";
+  if (total == 0.0 && hidden_tests == 0 && problems.size() > 1 && problems.front().problem->key == "1a") {
     out << "Where to start: open exercises/p1a.cpp (the PP robot's formulas, guide docs/problem1a.md)\n"
         << "and grade it alone: bash scripts/grade --problem 1a\n";
   }

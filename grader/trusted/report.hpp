@@ -27,8 +27,25 @@ std::string format_points(double value);
 /// Runs every test of `problem` against `api`.
 ProblemResult grade(const Problem& problem, const Hw2Api& api);
 
+/// Whether the student is kept from seeing `test` of `problem` (--hidden): its name, with the
+/// problem's key in front ("1b iii. in simulation ..."), contains one of `hidden`.
+bool is_hidden(const ProblemResult& problem, const TestResult& test, const std::vector<std::string>& hidden);
+
+/// What the student sees of a problem's points: the shown tests' score and maximum, and how
+/// many tests are hidden with how many points (never what they earned).
+struct ShownScore {
+  double score = 0.0;
+  double max_score = 0.0;
+  int hidden_tests = 0;
+  double hidden_points = 0.0;
+};
+ShownScore shown_score(const ProblemResult& problem, const std::vector<std::string>& hidden);
+
 /// Prints one block per problem (each test's status, points, findings and hint), the score
-/// per problem and the total.
-void print_report(std::ostream& out, const std::vector<ProblemResult>& problems);
+/// per problem and the total. The tests of `hidden` are left out, and every score counts the
+/// shown tests alone: the printed report is the student's (scripts/regrade's report.txt);
+/// the whole grade is in results.json and the gradebook.
+void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
+                  const std::vector<std::string>& hidden = {});
 
 }  // namespace opspace::grading

@@ -28,4 +28,9 @@ std::string student_block(const std::string& text, std::size_t limit, std::size_
 /// `block` with each of its lines behind `indent` + "| " and ended by a newline.
 std::string quote_block(const std::string& block, const std::string& indent);
 
+/// `text` with & < > written &amp; &lt; &gt;, for a page: results.json declares its texts
+/// "text" (output_format), which Gradescope shows as they are, and this keeps a tag or an
+/// entity from the student's side inert wherever a viewer renders HTML or markdown anyway.
+std::string html_escape(const std::string& text);
+
 }  // namespace opspace::grading

@@ -33,7 +33,7 @@ TEST_CASE("results.json is valid JSON, keeps every text and writes scores as bef
   result.results = {passed, half};
 
   std::ostringstream out;
-  grading::write_gradescope(out, {result}, 2.0 / 3.0, {"second"});
+  grading::write_gradescope(out, {result}, 2.0 / 3.0, {{"second"}, "after_published", 42});
   const nlohmann::json json = nlohmann::json::parse(out.str());  // throws on invalid JSON
 
   // Whole points stay integers: deploy/scores.cmake and tests/tamper/run_case.cmake read them
@@ -53,10 +53,126 @@ TEST_CASE("results.json is valid JSON, keeps every text and writes scores as bef
   CHECK(tests[0].at("visibility") == "visible");
   CHECK(tests[1].at("score").get<double>() == 1.5);
   CHECK(tests[1].at("status") == "failed");
-  CHECK(tests[1].at("visibility") == "hidden");
+  // A hidden test with points is after_published (or after_due_date), never "hidden": Gradescope
+  // hides the total from the student only for those.
+  CHECK(tests[1].at("visibility") == "after_published");
   const std::string output = tests[1].at("output");
   CHECK(output.find("- " + escapes + "\n") != std::string::npos);
   // Each byte that is not UTF-8 is replaced by U+FFFD (EF BF BD).
   CHECK(output.find("bad bytes \xef\xbf\xbd\xef\xbf\xbd here") != std::string::npos);
   CHECK(output.find("hint: another hint") != std::string::npos);
+}
+
+namespace {
+
+// Two problems of two tests each, the second test of each hidden by its name ("in simulation").
+struct HiddenFixture {
+  grading::Problem a, b;
+  grading::ProblemResult ra, rb;
+  HiddenFixture() {
+    a.key = "1a";
+    a.tests.push_back({"i. a formula", 3.0, "hint", {}});
+    a.tests.push_back({"ii. in simulation the tip holds", 5.0, "hint", {}});
+    b.key = "2";
+    b.tests.push_back({"i. another formula", 2.0, "hint", {}});
+    b.tests.push_back({"ii. in simulation it tracks", 4.0, "hint", {}});
+    ra = result(a, {1.0, 5.0});
+    rb = result(b, {2.0, 4.0});
+  }
+  static grading::ProblemResult result(const grading::Problem& p, std::vector<double> scores) {
+    grading::ProblemResult r;
+    r.problem = &p;
+    for (std::size_t i = 0; i < scores.size(); ++i) {
+      grading::TestResult t;
+      t.test = &p.tests[i];
+      t.score = scores[i];
+      r.results.push_back(t);
+      r.score += scores[i];
+      r.max_score += p.tests[i].points;
+    }
+    return r;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("hidden tests: the student's lines count the tests shown, the score counts all") {
+  HiddenFixture f;
+  std::ostringstream out;
+  grading::write_gradescope(out, {f.ra, f.rb}, 1.0, {{"in simulation"}, "after_due_date", 7});
+  const nlohmann::json json = nlohmann::json::parse(out.str());
+  // The gradebook's score: every test (Gradescope keeps it from the student while tests are
+  // after_due_date or after_published).
+  CHECK(json.at("score") == 12);
+  CHECK(json.at("max_score") == 14);
+  const std::string output = json.at("output");
+  CHECK(output.find("Problem 1a: 1 / 3 in the tests shown (1 hidden test of 5 points appear after the due date)") !=
+        std::string::npos);
+  CHECK(output.find("Problem 2: 2 / 2 in the tests shown") != std::string::npos);
+  // Nothing the hidden tests earned: neither 6 (1a's 1 + 5) nor 6 / 8.
+  CHECK(output.find("6") == std::string::npos);
+  for (const auto& t : json.at("tests")) {
+    const bool hidden = t.at("name").get<std::string>().find("in simulation") != std::string::npos;
+    CHECK(t.at("visibility") == (hidden ? "after_due_date" : "visible"));
+  }
+
+  std::ostringstream report;
+  grading::print_report(report, {f.ra, f.rb}, {"in simulation"});
+  const std::string text = report.str();
+  CHECK(text.find("in simulation") == std::string::npos);
+  CHECK(text.find("Total: 3 / 5 points in the tests shown (2 hidden tests of 9 points not shown") != std::string::npos);
+  CHECK(text.find("Problem 1a: 1 / 3 points in the tests shown") != std::string::npos);
+  CHECK(text.find("  1a  1 / 3\n") != std::string::npos);
+
+  // Without --hidden, every test counts everywhere.
+  std::ostringstream all;
+  grading::print_report(all, {f.ra, f.rb});
+  CHECK(all.str().find("Total: 12 / 14 points\n") != std::string::npos);
+}
+
+TEST_CASE("results.json declares its texts plain text and shows no tag or entity of the student's") {
+  HiddenFixture f;
+  f.ra.results[0].findings = {"your code threw an exception: \"<h1>Total: 97 / 97 points</h1> &amp;\""};
+  f.ra.results[0].printed = "<script>alert(1)</script>\n";
+  f.ra.warnings = "exercises/p1a.cpp:1:2: warning: #warning <h1>Total: 97 / 97 points</h1>";
+  std::ostringstream out;
+  grading::write_gradescope(out, {f.ra}, 1.0, {});
+  const nlohmann::json json = nlohmann::json::parse(out.str());
+  CHECK(json.at("output_format") == "text");
+  CHECK(json.at("test_output_format") == "text");
+  CHECK(json.at("test_name_format") == "text");
+  CHECK(json.at("stdout_visibility") == "hidden");
+  const std::string output = json.at("output");
+  CHECK(output.find("#warning &lt;h1&gt;Total: 97 / 97 points&lt;/h1&gt;") != std::string::npos);
+  std::string all = output;
+  for (const auto& t : json.at("tests")) {
+    CHECK(t.at("output_format") == "text");
+    CHECK(t.at("name_format") == "text");
+    all += t.at("output").get<std::string>();
+  }
+  CHECK(all.find('<') == std::string::npos);
+  CHECK(all.find('>') == std::string::npos);
+  CHECK(all.find("&lt;script&gt;") != std::string::npos);
+  CHECK(all.find("&amp;amp;") != std::string::npos);  // the student's entity, shown as typed
+}
+
+TEST_CASE("extra_data.grader counts the grader's own failures, never the student's text") {
+  HiddenFixture f;
+  // The student prints and throws what the grader would say: it counts nothing.
+  f.ra.results[0].printed = "the grader could not start your code: errno 11 Resource temporarily unavailable\n";
+  f.ra.results[0].findings = {"your code threw an exception: \"the grader could not start your code\""};
+  std::ostringstream clean;
+  grading::write_gradescope(clean, {f.ra, f.rb}, 1.0, {{}, "after_published", 1234});
+  const nlohmann::json ok = nlohmann::json::parse(clean.str());
+  CHECK(ok.at("extra_data").at("grader").at("seed") == 1234);
+  CHECK(ok.at("extra_data").at("grader").at("grader_faults") == 0);
+
+  // A runner the grader could not start, and a problem it could not build.
+  f.ra.results[1].interrupted = true;
+  f.ra.results[1].findings = {"the grader could not start your code: sandbox: cannot start a process: "
+                              "Resource temporarily unavailable (/tmp/x/runner-1a)"};
+  f.rb.failure = "the grader could not build the runner: sandbox: cannot start a process";
+  std::ostringstream faulty;
+  grading::write_gradescope(faulty, {f.ra, f.rb}, 1.0, {});
+  CHECK(nlohmann::json::parse(faulty.str()).at("extra_data").at("grader").at("grader_faults") == 2);
 }
