@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# scripts/regrade grades two students at once, as Gradescope would grade them apart: alice,
+# hostile (tests/deploy/hostile/p1b_neighbour.cpp.in: her 1b runner keeps 40 processes busy and
+# writes over every file of another grading it can reach), and bob, the reference. Each grading
+# runs its student's code as an account of its own, in its own view of the files, and a test's
+# limit counts the runner's CPU time: bob keeps 97/97 under the issue's 10 s limit (before the
+# third round he lost 7 points to "did not answer within 10 s"), his files and row are his, and
+# nothing alice wrote landed (no pwned-* marker). Alice's other problems keep full marks: her
+# processes die with her 1b runner.
+#   bash tests/deploy/regrade_isolation.sh REPO WORK
+set -euo pipefail
+repo=$1 work=$2
+check="$repo/tests/deploy/check_json.cmake"
+rm -rf "$work"
+mkdir -p "$work/in/alice" "$work/in/bob" "$work/out"
+if ! (cd "$repo/exercises" && sha256sum --quiet -c "$repo/tests/graded/stubs.sha256" > /dev/null 2>&1); then
+  echo "SKIPPED: exercises/ have been edited (scripts/regrade grades a missing file as the shipped stub)"
+  exit 0
+fi
+cp "$repo"/solutions/p*.cpp "$work/in/alice/"
+cp "$repo"/solutions/p*.cpp "$work/in/bob/"
+out="$(cd "$work/out" && pwd)"
+{ sed "s#@OUT@#$out#g" "$repo/tests/deploy/hostile/p1b_neighbour.cpp.in"; cat "$repo/solutions/p1b.cpp"; } > "$work/in/alice/p1b.cpp"
+
+bash "$repo/scripts/regrade" "$work/in" "$work/out" --jobs 2 -- --timeout 10 2> "$work/regrade.err" || { cat "$work/regrade.err"; exit 1; }
+cat "$work/regrade.err"
+cat "$work/out/gradebook.csv"
+grep -qx 'bob,23,20,18,16,20,97,97,' "$work/out/gradebook.csv" ||
+  { grep -E 'FAIL|not graded|!' "$work/out/bob/report.txt" | head -20; echo "bob did not keep full marks beside alice"; exit 1; }
+grep -q '^alice,23,[0-9.]*,18,16,20,' "$work/out/gradebook.csv" || { echo "alice's other problems lost points to her own 1b"; exit 1; }
+cmake -DJSON="$work/out/bob/results.json" "-DFULL=1a;1b;2;3;4" -P "$check"
+if ls "$work/out"/pwned-* > /dev/null 2>&1; then
+  ls "$work/out"/pwned-*
+  echo "alice's code wrote over another grading's files"
+  exit 1
+fi
+cmp -s "$repo/solutions/p1a.cpp" "$work/out/bob/exercises/p1a.cpp" || { echo "bob's collected files changed"; exit 1; }
+grep -q 'UNPROTECTED' "$work/out/gradebook.csv" && { echo "the gradebook says UNPROTECTED where the sandbox holds"; exit 1; }
+echo "a hostile submission graded beside an honest one changed nothing of his"
