@@ -15,6 +15,7 @@
 #include <random>
 #include <thread>
 
+#include "cpu_share.hpp"
 #include "interrupt.hpp"
 #include "mistakes.hpp"
 #include "remote_api.hpp"
@@ -198,6 +199,8 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   become_subreaper();
   clean_up_when_interrupted();
+  // Before any child: the gradings running at once then share the CPU by group (cpu_share.hpp).
+  const std::string cpu_group = options.isolate ? join_own_cpu_group() : "";
   Account account;
   try {
     account = options.isolate ? grading_account(options.user) : Account{};
@@ -221,7 +224,11 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     unprotected = "the sandbox is incomplete here (missing: " + missing + ")";
   }
   if (options.check_sandbox) {
-    std::cout << (unprotected.empty() ? "sandbox: complete" : "sandbox: " + unprotected) << "\n";
+    std::cout << (unprotected.empty() ? "sandbox: complete" : "sandbox: " + unprotected) << "\n"
+              << "cpu share: "
+              << (cpu_group.empty() ? "no writable cgroup here: each test's limit counts the runner's CPU time"
+                                    : "a group per grading, " + cpu_group)
+              << "\n";
     return unprotected.empty() ? 0 : kExitUnprotected;
   }
   if (options.seed == 0) {

@@ -13,6 +13,13 @@ fail() { echo "FAILED: $*"; exit 1; }
 
 "$grader" --check-sandbox > "$work/check.txt" 2>&1 || { cat "$work/check.txt"; echo "SKIPPED: the sandbox is incomplete on this machine, so the contrast cannot be shown"; exit 0; }
 grep -qx 'sandbox: complete' "$work/check.txt" || fail "--check-sandbox: $(cat "$work/check.txt")"
+# How gradings share the CPU: a cgroup of the grading's own where the machine offers a writable
+# one, else the runner's CPU time alone (docs/grader.md, "Between gradings").
+grep -Eq '^cpu share: (a group per grading, cgroup v[12]|no writable cgroup here)' "$work/check.txt" ||
+  fail "--check-sandbox does not say how the CPU is shared: $(cat "$work/check.txt")"
+if [ "$(id -u)" -eq 0 ] && [ -w /sys/fs/cgroup/cpu/cgroup.procs ]; then
+  grep -q '^cpu share: a group per grading, cgroup v1 cpu:' "$work/check.txt" || fail "a writable cgroup v1 cpu controller is not used"
+fi
 
 code=0
 "$deny" "$grader" --check-sandbox > "$work/check-denied.txt" 2>&1 || code=$?
