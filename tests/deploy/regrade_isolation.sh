@@ -7,9 +7,9 @@
 # third round he lost 7 points to "did not answer within 10 s"), his files and row are his, and
 # nothing alice wrote landed (no pwned-* marker). Alice's other problems keep full marks: her
 # processes die with her 1b runner.
-#   bash tests/deploy/regrade_isolation.sh REPO WORK
+#   bash tests/deploy/regrade_isolation.sh REPO WORK [SECONDS PER TEST, 10]
 set -euo pipefail
-repo=$1 work=$2
+repo=$1 work=$2 limit=${3:-10}
 check="$repo/tests/deploy/check_json.cmake"
 rm -rf "$work"
 mkdir -p "$work/in/alice" "$work/in/bob" "$work/out"
@@ -22,7 +22,7 @@ cp "$repo"/solutions/p*.cpp "$work/in/bob/"
 out="$(cd "$work/out" && pwd)"
 { sed "s#@OUT@#$out#g" "$repo/tests/deploy/hostile/p1b_neighbour.cpp.in"; cat "$repo/solutions/p1b.cpp"; } > "$work/in/alice/p1b.cpp"
 
-bash "$repo/scripts/regrade" "$work/in" "$work/out" --jobs 2 -- --timeout 10 2> "$work/regrade.err" || { cat "$work/regrade.err"; exit 1; }
+bash "$repo/scripts/regrade" "$work/in" "$work/out" --jobs 2 -- --timeout "$limit" 2> "$work/regrade.err" || { cat "$work/regrade.err"; exit 1; }
 cat "$work/regrade.err"
 cat "$work/out/gradebook.csv"
 grep -qx 'bob,23,20,18,16,20,97,97,' "$work/out/gradebook.csv" ||
