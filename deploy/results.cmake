@@ -7,6 +7,17 @@ cmake_minimum_required(VERSION 3.22)
 #
 #   cmake -DJSON=results.json [-DNOTES=notes.txt] [-DREASON=text] -P results.cmake
 
+# The notes name the submission's files as the student named them: "<h2>...</h2>.cpp" is a file
+# name. results.json's texts are "text" (output_format), and their & < > are written as HTML
+# entities besides (as the grader writes its own, grader/trusted/student_text.hpp), so that no
+# page renders a tag of the student's.
+function(html_escape text out)
+  string(REPLACE "&" "&amp;" text "${text}")
+  string(REPLACE "<" "&lt;" text "${text}")
+  string(REPLACE ">" "&gt;" text "${text}")
+  set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
 # A JSON string literal of `text`: the notes and the reason are printable ASCII and newlines
 # (collect_submission.sh cleans file names), so escaping \ " and the line ends is enough.
 function(json_string text out)
@@ -21,7 +32,9 @@ endfunction()
 set(notes "")
 if(DEFINED NOTES AND EXISTS "${NOTES}")
   file(READ "${NOTES}" notes)
+  html_escape("${notes}" notes)
 endif()
+html_escape("${REASON}" REASON)
 
 set(valid OFF)
 if(EXISTS "${JSON}")
@@ -43,12 +56,13 @@ if(valid)
   endif()
   json_string("About your submission:\n${notes}\n${output}" value)
   string(JSON json SET "${json}" output "${value}")
+  string(JSON json SET "${json}" output_format "\"text\"")
 else()
   if(NOT DEFINED REASON OR REASON STREQUAL "")
     set(REASON "the grader wrote no results")
   endif()
   json_string("${notes}\nThe autograder could not grade this submission: ${REASON}.\nThis is not your fault if your files are named as asked: tell your instructor." value)
-  set(json "{\"score\": 0, \"output\": ${value}, \"visibility\": \"visible\", \"tests\": []}")
+  set(json "{\"score\": 0, \"output\": ${value}, \"output_format\": \"text\", \"visibility\": \"visible\", \"tests\": []}")
 endif()
 file(WRITE "${JSON}.tmp" "${json}\n")
 file(RENAME "${JSON}.tmp" "${JSON}")

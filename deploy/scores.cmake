@@ -69,9 +69,19 @@ else()
   set(note "no results.json")
 endif()
 
-# CSV: a field with a comma, a quote or a space is quoted, quotes doubled.
+# CSV, with OWASP's advice on CSV injection: the student's name is the name of a folder, which
+# may be "=HYPERLINK(...)" or hold a line break. A field that begins with = + - @ (after any
+# spaces), their full-width forms, a tab or a carriage return gets a ' in front, so that no
+# spreadsheet reads it as a formula; a carriage return or line feed inside is written \r or \n,
+# so that a row stays one line; a field with a comma, a quote, a semicolon, a space or a ' is
+# quoted, its quotes doubled.
 function(csv_field text out)
-  if(text MATCHES "[\",; ]")
+  if(text MATCHES "^[ ]*[-=+@]" OR text MATCHES "^[\t\r]" OR text MATCHES "^[ ]*(＝|＋|－|＠)")
+    set(text "'${text}")
+  endif()
+  string(REPLACE "\r" "\\r" text "${text}")
+  string(REPLACE "\n" "\\n" text "${text}")
+  if(text MATCHES "[\",; '\t]")
     string(REPLACE "\"" "\"\"" text "${text}")
     set(text "\"${text}\"")
   endif()
@@ -79,9 +89,13 @@ function(csv_field text out)
 endfunction()
 csv_field("${STUDENT}" student)
 set(row "${student}")
-foreach(key IN LISTS keys)
-  string(APPEND row ",${score_${key}}")
+foreach(field IN LISTS keys ITEMS total max note)
+  if(field IN_LIST keys)
+    csv_field("${score_${field}}" value)
+  else()
+    csv_field("${${field}}" value)
+  endif()
+  string(APPEND row ",${value}")
 endforeach()
-csv_field("${note}" note)
-string(APPEND row ",${total},${max},${note}\n")
+string(APPEND row "\n")
 file(WRITE "${ROW}" "${row}")

@@ -3,10 +3,14 @@ cmake_minimum_required(VERSION 3.22)
 # - it parses, with a numeric score and a tests[] array (empty only if EMPTY is set);
 # - each problem in FULL earned all its points, each in ZERO none (tests are named "<key> ...");
 # - "output" matches every regular expression in OUTPUT (a list);
-# - the tests whose name matches HIDDEN (a regular expression; one at least) are hidden, the
-#   others visible.
-#   cmake -DJSON=file [-DFULL="1a;1b"] [-DZERO="2"] [-DOUTPUT="regex;regex"] [-DHIDDEN=regex] [-DEMPTY=ON]
-#         -P check_json.cmake
+# - the tests whose name matches HIDDEN (a regular expression; one at least) are HIDDEN_AS
+#   (default after_published: hw2-grade --hidden), the others visible;
+# - its texts are declared "text" (output_format), and hold no < or > raw.
+#   cmake -DJSON=file [-DFULL="1a;1b"] [-DZERO="2"] [-DOUTPUT="regex;regex"] [-DHIDDEN=regex]
+#         [-DHIDDEN_AS=after_due_date] [-DEMPTY=ON] -P check_json.cmake
+if(NOT DEFINED HIDDEN_AS)
+  set(HIDDEN_AS after_published)
+endif()
 if(NOT EXISTS "${JSON}")
   message(FATAL_ERROR "${JSON} was not written")
 endif()
@@ -23,6 +27,13 @@ if(count EQUAL 0 AND NOT EMPTY)
   message(FATAL_ERROR "${JSON}: tests[] is empty")
 endif()
 string(JSON output ERROR_VARIABLE bad GET "${json}" output)
+string(JSON format ERROR_VARIABLE bad_format GET "${json}" output_format)
+if(bad_format OR NOT format STREQUAL "text")
+  message(FATAL_ERROR "${JSON}: output_format is not \"text\" (${format}${bad_format})")
+endif()
+if(output MATCHES "[<>]")
+  message(FATAL_ERROR "${JSON}: the output holds a < or > raw:\n${output}")
+endif()
 foreach(pattern IN LISTS OUTPUT)
   if(NOT output MATCHES "${pattern}")
     message(FATAL_ERROR "${JSON}: the output does not say '${pattern}':\n${output}")
@@ -37,7 +48,7 @@ if(count GREATER 0)
       string(JSON visibility GET "${json}" tests ${i} visibility)
       set(expected visible)
       if(name MATCHES "${HIDDEN}")
-        set(expected hidden)
+        set(expected "${HIDDEN_AS}")
         math(EXPR hidden_count "${hidden_count} + 1")
       endif()
       if(NOT visibility STREQUAL expected)

@@ -51,3 +51,42 @@ grep -q '^carol,,,,,,0,,"not graded: see the report"$' "$work/out2/gradebook.csv
 grep -q 'grading took more than 6 s and was stopped' "$work/out2/carol/report.txt"
 cmake -DJSON="$work/out2/carol/results.json" -DEMPTY=ON "-DOUTPUT=grading took more than 6 s" -P "$check"
 echo "regrade graded the stub, the reference and the hanging submission without stalling"
+
+# Issue 38: a student's folder name and prints decide nothing but their own grade. Problem 1a
+# alone, two at a time: folders named "=cmd|' -C calc'!A0" (a formula, OWASP's example) and
+# "evil<line feed>name,0,0" (a new row) hold the untouched stub, and printer holds the
+# reference, whose mass_matrix prints "errno 11 Resource temporarily unavailable": the retry
+# that grepped report.txt graded printer again, with a new seed. The gradebook has one line per
+# student, no field that begins with = + - @, and nobody graded again.
+formula="=cmd|' -C calc'!A0"
+newline=$'evil\nname,0,0'
+mkdir -p "$work/in3/$formula" "$work/in3/$newline" "$work/in3/printer"
+cp "$repo/exercises/p1a.cpp" "$work/in3/$formula/"
+cp "$repo/exercises/p1a.cpp" "$work/in3/$newline/"
+cp "$repo/solutions/p1a.cpp" "$work/in3/printer/"
+sed -i -e '1i #include <cstdio>' \
+  -e 's/^Eigen::Matrix2d mass_matrix(double m1, double m2) {$/&\n  std::printf("errno 11 Resource temporarily unavailable\\n");\n  std::fflush(stdout);/' \
+  "$work/in3/printer/p1a.cpp"
+grep -q 'errno 11' "$work/in3/printer/p1a.cpp" || { echo "solutions/p1a.cpp changed: update this test"; exit 1; }
+bash "$repo/scripts/regrade" "$work/in3" "$work/out3" --jobs 2 -- --problem 1a --timeout 60 2> "$work/regrade3.err" ||
+  { cat "$work/regrade3.err"; exit 1; }
+cat "$work/regrade3.err"
+cat -A "$work/out3/gradebook.csv"
+rows=$(grep -vc '^UNPROTECTED,' "$work/out3/gradebook.csv")
+[ "$rows" -eq 4 ] || { echo "the gradebook has $rows lines, not a header and 3 rows"; exit 1; }
+grep -qx "\"'=cmd|' -C calc'!A0\",0,,,,,0,23," "$work/out3/gradebook.csv" || { echo "the formula's row is not neutralised"; exit 1; }
+grep -qx '"evil\\nname,0,0",0,,,,,0,23,' "$work/out3/gradebook.csv" || { echo "the line feed's row is not one quoted field"; exit 1; }
+grep -qx 'printer,23,,,,,23,23,' "$work/out3/gradebook.csv" || { echo "printer did not keep 1a's 23 points"; exit 1; }
+if cut -d, -f1 "$work/out3/gradebook.csv" | grep -q '^[-=+@]'; then echo "a field begins with = + - or @"; exit 1; fi
+grep -q 'errno 11 Resource temporarily unavailable' "$work/out3/printer/report.txt" ||
+  { echo "printer's print is not in the report (the bait this case needs)"; exit 1; }
+if grep -q 'again' "$work/regrade3.err" "$work/out3/printer/report.txt"; then
+  echo "a print of the student's made regrade grade printer again"
+  exit 1
+fi
+# The retry reads the grader's own record: its faults and its seed (deploy/grader_status.cmake).
+printf '{"extra_data": {"grader": {"seed": 77, "grader_faults": 1}}}' > "$work/faulty.json"
+printf '{"extra_data": {"grader": {"seed": 77, "grader_faults": 0}}}' > "$work/clean.json"
+[ "$(cmake -DJSON="$work/faulty.json" -P "$repo/deploy/grader_status.cmake")" = 77 ] || { echo "a grader fault is not retried"; exit 1; }
+[ -z "$(cmake -DJSON="$work/clean.json" -P "$repo/deploy/grader_status.cmake")" ] || { echo "a clean grading is retried"; exit 1; }
+echo "regrade kept the names out of the gradebook's formulas and rows, and a print out of its retry"
