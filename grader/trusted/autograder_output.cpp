@@ -97,7 +97,8 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
             << format_points(shown.max_score);
     if (shown.hidden_tests > 0) {
       summary << " in the tests shown (" << shown.hidden_tests << " hidden test" << (shown.hidden_tests == 1 ? "" : "s")
-              << " of " << format_points(shown.hidden_points) << " points appear " << shown_when(settings.hidden_as)
+              << " of " << format_points(shown.hidden_points) << " points "
+              << (shown.hidden_tests == 1 ? "appears " : "appear ") << shown_when(settings.hidden_as)
               << ")";
     }
     summary << "\n";

@@ -106,7 +106,7 @@ TEST_CASE("hidden tests: the student's lines count the tests shown, the score co
   CHECK(json.at("score") == 12);
   CHECK(json.at("max_score") == 14);
   const std::string output = json.at("output");
-  CHECK(output.find("Problem 1a: 1 / 3 in the tests shown (1 hidden test of 5 points appear after the due date)") !=
+  CHECK(output.find("Problem 1a: 1 / 3 in the tests shown (1 hidden test of 5 points appears after the due date)") !=
         std::string::npos);
   CHECK(output.find("Problem 2: 2 / 2 in the tests shown") != std::string::npos);
   // Nothing the hidden tests earned: neither 6 (1a's 1 + 5) nor 6 / 8.
