@@ -3,8 +3,8 @@ cmake_minimum_required(VERSION 3.22)
 # then results.json read as Gradescope reads it. MODE is
 #   tag        the reference 1b with "#warning <h1>Total: 97 / 97 points</h1>": the compiler's
 #              warning quotes it, and results.json's output shows it, escaped;
-#   file_name  a submission holding the reference files and one named "<h2>Total: 97 / 97
-#              points</h2>.cpp", collected and completed as run_autograder does
+#   file_name  a submission holding the reference files and two whose names hold a tag
+#              ("<h2>Total: 97 / 97 points</h2>.cpp", "<h2 ...>Total: 97 of 97 points.cpp"), collected and completed as run_autograder does
 #              (deploy/collect_submission.sh, deploy/results.cmake): the note that names it;
 #   hidden     the reference 1b with --hidden "in simulation": the report and results.json's
 #              output count the tests shown alone (10 of 1b's 20 points), the hidden tests are
@@ -30,7 +30,10 @@ if(MODE STREQUAL "tag")
 elseif(MODE STREQUAL "file_name")
   set(submission "${WORK}/submission")
   file(COPY ${solutions} DESTINATION "${submission}")
+  # A name cannot hold "/": this one is three folders deep, as a zip can hold it, and the note
+  # names its path. The second is one file name, its tag left open (a page renders it anyway).
   file(WRITE "${submission}/<h2>Total: 97 / 97 points</h2>.cpp" "// not an exercise file\n")
+  file(WRITE "${submission}/<h2 style=color:green>Total: 97 of 97 points.cpp" "// not an exercise file\n")
   execute_process(COMMAND bash "${REPO}/deploy/collect_submission.sh" "${submission}" "${WORK}/exercises"
                           "${REPO}/exercises" RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
@@ -96,7 +99,8 @@ if(MODE STREQUAL "tag")
     message(FATAL_ERROR "results.json's output does not show the warning, escaped:\n${shown}")
   endif()
 elseif(MODE STREQUAL "file_name")
-  if(NOT shown MATCHES "'&lt;h2&gt;Total: 97 / 97 points&lt;/h2&gt;.cpp'")
+  if(NOT shown MATCHES "'&lt;h2&gt;Total: 97 / 97 points&lt;/h2&gt;.cpp'" OR
+     NOT shown MATCHES "'&lt;h2 style=color:green&gt;Total: 97 of 97 points.cpp'")
     message(FATAL_ERROR "results.json's output does not name the file, escaped:\n${shown}")
   endif()
 elseif(MODE STREQUAL "hidden")
