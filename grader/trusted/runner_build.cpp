@@ -13,10 +13,10 @@
 
 #include "build_tool.hpp"
 #include "compiler_messages.hpp"
+#include "elf_files.hpp"
 #include "interrupt.hpp"
 #include "library_answers.hpp"
 #include "runner_process.hpp"
-#include "runtime_files.hpp"
 #include "sandbox.hpp"
 #include "sha256.hpp"
 #include "student_text.hpp"
@@ -38,14 +38,20 @@ void make_owned(const std::string& path, const Account& account) {
     throw std::runtime_error("cannot give a build folder to " + account.name);
 }
 
-// A folder of the build, made by the grader: `mode` 0755 for what the stage reads, or 0700 and
-// given to the sandbox's account for what it writes (its output, and nothing else).
+// A folder of the build, made by the grader: for what the stage writes (its output, and nothing
+// else), the sandbox's account's own (0700); for what it reads, the grader's, readable by the
+// account's group alone (0750), so that no other grading's account reads this student's files
+// even where the files' view is not private.
 std::string make_folder(const std::string& path, bool writable, const Account& account) {
   fs::create_directories(path);
-  fs::permissions(path, writable ? fs::perms::owner_all
-                                 : fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                                       fs::perms::others_read | fs::perms::others_exec);
-  if (writable) make_owned(path, account);
+  fs::permissions(path, writable ? fs::perms::owner_all : fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec);
+  if (writable) {
+    make_owned(path, account);
+  } else if (account.uid == 0 || geteuid() != 0) {
+    fs::permissions(path, fs::perms::others_read | fs::perms::others_exec, fs::perm_options::add);
+  } else if (chown(path.c_str(), 0, account.gid) != 0) {
+    throw std::runtime_error("cannot give a build folder to " + account.name + "'s group");
+  }
   return path;
 }
 
@@ -173,6 +179,98 @@ std::string cache_key(const Toolchain& toolchain, const std::string& key, const 
   return hash.hex();
 }
 
+// The folders of one build, one per stage (docs/grader.md, "What each stage sees"). A stage
+// reads folders the grader wrote, read-only to it, and writes only its own; the next stage reads
+// the grader's copy of what it wrote. The source is `text`, the bytes the cache key was taken
+// from, written by the grader.
+struct Stages {
+  std::string work, source, compiled, objects, linked, headers_dir, archives_dir;
+  std::string source_file, object, runner;
+  Staged headers;
+  std::vector<std::string> roots;  // the include roots, as the compiler sees them
+
+  Stages(const std::string& folder, const std::string& shown_as, const std::string& text, const Toolchain& toolchain,
+         const Account& account)
+      : work(folder),
+        source(make_folder(work + "/source", false, account)),
+        compiled(make_folder(work + "/compiled", true, account)),
+        objects(make_folder(work + "/objects", false, account)),
+        linked(make_folder(work + "/linked", true, account)),
+        headers_dir(make_folder(work + "/headers", false, account)),
+        archives_dir(make_folder(work + "/archives", false, account)),
+        source_file(source + "/" + fs::path(shown_as).filename().string()),
+        object(objects + "/exercise.o"),
+        runner(objects + "/runner") {
+    fs::permissions(work, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+    std::ofstream(source_file, std::ios::binary) << text;
+    fs::permissions(source_file, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    headers = stage(toolchain.headers, headers_dir);
+    for (const std::string& root : toolchain.include_roots) roots.push_back(headers.rewrite(root));
+  }
+};
+
+// Compiles the source: it sees the source and the headers, no archive of the library and no
+// other file of this grading (an .incbin or #embed reaches only what this stage sees); checks
+// what it included, and copies the object for the next stages. False with built.error.
+bool compile_stage(const Toolchain& toolchain, const Stages& s, const std::string& shown_as,
+                   const BuildSettings& settings, BuiltRunner& built) {
+  std::vector<std::string> compile;
+  for (const std::string& arg : toolchain.compile) compile.push_back(s.headers.rewrite(arg));
+  compile.insert(compile.end(), {"-c", s.source_file, "-o", s.compiled + "/exercise.o", "-MD", "-MF", s.compiled + "/exercise.d"});
+  const ToolResult cc = run_tool(compile, s.compiled, {s.source, s.headers_dir}, settings, kMaxToolOutput);
+  built.warnings = warnings_of(cc.output, s.source_file, shown_as, kMaxWarnings);
+  if (cc.timed_out) {
+    built.error = "compiling " + shown_as + " took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s";
+    return false;
+  }
+  if (!WIFEXITED(cc.status) || WEXITSTATUS(cc.status) != 0) {
+    built.error = first_error(cc.output, s.source_file, shown_as, s.roots, "compiler");
+    if (built.error.empty()) built.error = "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")";
+    return false;
+  }
+  built.error = written_file(s.compiled + "/exercise.d")
+                    ? check_includes(s.compiled + "/exercise.d", s.source, shown_as, s.roots)
+                    : "the compiler left no list of what " + shown_as + " included";
+  if (!built.error.empty()) return false;
+  try {
+    copy_read_only(s.compiled + "/exercise.o", s.object);
+    const std::string refusal = object_refusal(s.object);
+    if (!refusal.empty()) built.error = shown_as + " compiled to an object the grader does not link: " + refusal;
+  } catch (const std::exception&) {
+    built.error = "the compiler left no object file for " + shown_as;
+  }
+  return built.error.empty();
+}
+
+// Links the grader's copy of the object with this problem's inputs (its runner loop and the
+// library: the only archives it sees), copies the runner and reads what it needs to start.
+bool link_stage(const Toolchain& toolchain, const std::vector<std::string>& inputs, const Stages& s,
+                const std::string& shown_as, const BuildSettings& settings, BuiltRunner& built) {
+  std::vector<std::string> own_archives;
+  for (const std::string& archive : toolchain.archives)
+    if (std::find(inputs.begin(), inputs.end(), archive) != inputs.end()) own_archives.push_back(archive);
+  const Staged archives = stage(own_archives, s.archives_dir);
+  std::vector<std::string> link = toolchain.link;
+  link.push_back(s.object);
+  for (const std::string& input : inputs) link.push_back(archives.rewrite(input));
+  link.insert(link.end(), {"-o", s.linked + "/runner"});
+  const ToolResult ld = run_tool(link, s.linked, {s.objects, s.archives_dir}, settings, kMaxToolOutput);
+  if (ld.timed_out || !WIFEXITED(ld.status) || WEXITSTATUS(ld.status) != 0) {
+    built.error = first_error(ld.output, s.object, shown_as, s.roots, "linker");
+    if (built.error.empty()) built.error = "linking the runner of " + shown_as + " failed";
+    built.error = "linking failed: " + built.error;
+    return false;
+  }
+  try {
+    copy_read_only(s.linked + "/runner", s.runner);
+    built.runtime = runtime_files(s.runner);
+  } catch (const std::exception& e) {
+    built.error = std::string("the grader could not read the runner it linked: ") + e.what();
+    return false;
+  }
+  return true;
+}
+
 // The oracles of problem `key` that the answers found belong to.
 void match_oracles(const std::string& key, BuiltRunner& built) {
   for (const Oracle& oracle : oracles(key)) {
@@ -252,93 +350,25 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
     return built;
   }
 
-  // One folder per stage. The stage reads folders the grader wrote (read-only to it) and writes
-  // only its own; the next stage reads the grader's copy of what it wrote. The source compiled
-  // is `text`, the bytes the cache key was taken from.
   const TemporaryFolder folder("/tmp/opspace-build-");
-  const std::string& work = folder.path();
-  fs::permissions(work, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
-  const std::string source_dir = make_folder(work + "/source", false, settings.account);
-  const std::string compiled = make_folder(work + "/compiled", true, settings.account);
-  const std::string objects = make_folder(work + "/objects", false, settings.account);
-  const std::string linked = make_folder(work + "/linked", true, settings.account);
-  const std::string file = fs::path(shown_as).filename().string();
-  const std::string work_file = source_dir + "/" + file;
-  std::ofstream(work_file, std::ios::binary) << text;
-  fs::permissions(work_file, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
-  const Staged headers = stage(toolchain.headers, make_folder(work + "/headers", false, settings.account));
-  std::vector<std::string> roots;
-  for (const std::string& root : toolchain.include_roots) roots.push_back(headers.rewrite(root));
-
-  // Compile: the source and the headers, no archive of the library and no other file of this
-  // grading (an .incbin or #embed reaches only what this stage sees).
-  std::vector<std::string> compile;
-  for (const std::string& arg : toolchain.compile) compile.push_back(headers.rewrite(arg));
-  compile.insert(compile.end(), {"-c", work_file, "-o", compiled + "/exercise.o", "-MD", "-MF", compiled + "/exercise.d"});
-  const ToolResult cc = run_tool(compile, compiled, {source_dir, work + "/headers"}, settings, kMaxToolOutput);
-  built.warnings = warnings_of(cc.output, work_file, shown_as, kMaxWarnings);
-  if (cc.timed_out) {
-    built.error = "compiling " + shown_as + " took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s";
-    return built;
-  }
-  if (!WIFEXITED(cc.status) || WEXITSTATUS(cc.status) != 0) {
-    built.error = first_error(cc.output, work_file, shown_as, roots, "compiler");
-    if (built.error.empty()) built.error = "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")";
-    return built;
-  }
-  built.error = written_file(compiled + "/exercise.d")
-                    ? check_includes(compiled + "/exercise.d", source_dir, shown_as, roots)
-                    : "the compiler left no list of what " + shown_as + " included";
-  if (!built.error.empty()) return built;
-  const std::string object = objects + "/exercise.o";
-  try {
-    copy_read_only(compiled + "/exercise.o", object);
-  } catch (const std::exception&) {
-    built.error = "the compiler left no object file for " + shown_as;
-    return built;
-  }
-
+  const Stages stages(folder.path(), shown_as, text, toolchain, settings.account);
+  if (!compile_stage(toolchain, stages, shown_as, settings, built)) return built;
   // The answers the file refers to, by any kind of reference ("U", or "w" and "v" for a weak or
   // aliased declaration, which pull nothing into the link but name what the file reaches for).
-  if (!add_answers(toolchain, key, "--undefined-only", object, linked, settings, built)) {
+  if (!add_answers(toolchain, key, "--undefined-only", stages.object, stages.linked, settings, built)) {
     built.error = "the grader could not list the functions " + shown_as + " refers to";
     return built;
   }
-
-  // Link the grader's copy of the object with the problem's runner loop and the library.
-  // Of the archives, this problem's inputs only (its runner loop, the library).
-  std::vector<std::string> own_archives;
-  for (const std::string& archive : toolchain.archives)
-    if (std::find(inputs->begin(), inputs->end(), archive) != inputs->end()) own_archives.push_back(archive);
-  const Staged archives = stage(own_archives, make_folder(work + "/archives", false, settings.account));
-  std::vector<std::string> link = toolchain.link;
-  link.push_back(object);
-  for (const std::string& input : *inputs) link.push_back(archives.rewrite(input));
-  link.insert(link.end(), {"-o", linked + "/runner"});
-  const ToolResult ld = run_tool(link, linked, {objects, work + "/archives"}, settings, kMaxToolOutput);
-  if (ld.timed_out || !WIFEXITED(ld.status) || WEXITSTATUS(ld.status) != 0) {
-    built.error = first_error(ld.output, object, shown_as, roots, "linker");
-    if (built.error.empty()) built.error = "linking the runner of " + shown_as + " failed";
-    built.error = "linking failed: " + built.error;
-    return built;
-  }
-  const std::string runner = objects + "/runner";
-  try {
-    copy_read_only(linked + "/runner", runner);
-    built.runtime = runtime_files(runner);
-  } catch (const std::exception& e) {
-    built.error = std::string("the grader could not read the runner it linked: ") + e.what();
-    return built;
-  }
+  if (!link_stage(toolchain, *inputs, stages, shown_as, settings, built)) return built;
   // What the runner holds of the library's answers, by whatever route they came in: its own
   // symbols (library_answers.hpp).
-  if (!add_answers(toolchain, key, "--defined-only", runner, linked, settings, built)) {
+  if (!add_answers(toolchain, key, "--defined-only", stages.runner, stages.linked, settings, built)) {
     built.error = "the grader could not list what the runner of " + shown_as + " holds";
     return built;
   }
   match_oracles(key, built);
   const std::string tmp = temporary(cached);
-  fs::copy_file(runner, tmp, fs::copy_options::overwrite_existing);
+  fs::copy_file(stages.runner, tmp, fs::copy_options::overwrite_existing);
   fs::permissions(tmp, fs::perms::owner_read | fs::perms::owner_exec);
   fs::rename(tmp, cached);
   save_report(cached + ".report", built);

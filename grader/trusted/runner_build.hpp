@@ -44,7 +44,7 @@ struct BuildSettings {
 struct BuiltRunner {
   bool ok = false;
   std::string binary;                 ///< the runner (in the cache), when ok
-  std::vector<std::string> runtime;   ///< the files it needs to start (runtime_files.hpp)
+  std::vector<std::string> runtime;   ///< the files it needs to start (elf_files.hpp)
   std::string error;                  ///< why not: "exercises/p1b.cpp:12: error: ..."
   std::string warnings;               ///< the compiler's warnings, cut short
   std::vector<std::string> answers;   ///< library answers the runner holds: "opspace::pp::mass_matrix"

@@ -31,7 +31,9 @@ Limits runner_limits(double timeout_seconds) {
   l.cpu_seconds = static_cast<unsigned long long>(std::max(60.0, 10.0 * timeout_seconds));
   l.file_size = 1ull << 20;
   l.open_files = 16;
-  l.processes = 64;
+  // A runner needs one process; 16 bound what a flood can take from gradings running at once
+  // (CPU and memory) under the grading's own account.
+  l.processes = 16;
   return l;
 }
 

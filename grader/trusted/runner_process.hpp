@@ -37,7 +37,7 @@ struct RunnerConfig {
   Account account;       ///< when the grader is root: the unprivileged account it runs as
   bool isolate = true;   ///< the sandbox's namespaces, limits and filter (sandbox.hpp)
   std::vector<std::string> env;  ///< its environment (empty, or the sanitizers' options)
-  std::vector<std::string> runtime;  ///< the files it needs to start (runtime_files.hpp)
+  std::vector<std::string> runtime;  ///< the files it needs to start (elf_files.hpp)
 };
 
 /// What the student's code printed during one test: the first bytes and the total count.

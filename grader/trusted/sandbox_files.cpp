@@ -140,8 +140,12 @@ void child_mounts(const ChildPlan& plan) {
       continue;
     }
     if (m.source == "tmpfs" || m.source == "tmpfs-noexec") {
-      const unsigned long flags = MS_NOSUID | MS_NODEV | (m.source == "tmpfs" ? 0 : MS_NOEXEC);
-      if (mount("tmpfs", m.target.c_str(), "tmpfs", flags, "size=512m,mode=1777") != 0) child_fail(plan, "mount /tmp");
+      // A tool's /tmp holds a compiler's temporary files; a runner's, which nothing of the
+      // runner needs, no more than a few of its 1 MiB files (tmpfs is memory).
+      const bool tool = m.source == "tmpfs";
+      if (mount("tmpfs", m.target.c_str(), "tmpfs", MS_NOSUID | MS_NODEV | (tool ? 0 : MS_NOEXEC),
+                tool ? "size=512m,mode=1777" : "size=16m,mode=1777") != 0)
+        child_fail(plan, "mount /tmp");
       continue;
     }
     if (m.source == "proc") {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # scripts/regrade grades two students at once, as Gradescope would grade them apart: alice,
-# hostile (tests/deploy/hostile/p1b_neighbour.cpp.in: her 1b runner keeps 40 processes busy and
-# writes over every file of another grading it can reach), and bob, the reference. Each grading
+# hostile (tests/deploy/hostile/p1b_neighbour.cpp.in: her 1b runner keeps busy as many of the 40
+# processes it tries as it may start, and writes over every file of another grading it can
+# reach), and bob, the reference. Each grading
 # runs its student's code as an account of its own, in its own view of the files, and a test's
 # limit counts the runner's CPU time: bob keeps 97/97 under the 10 s limit (before the
 # third round he lost 7 points to "did not answer within 10 s"), his files and row are his, and

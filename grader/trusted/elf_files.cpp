@@ -1,7 +1,8 @@
-// The runner's runtime files (runtime_files.hpp). The runner's ELF is read here as data: it was
-// linked from a student's object, so its headers are checked against the file's size before
-// any use. The system's libraries, found by name in the loader's folders, are read the same way.
-#include "runtime_files.hpp"
+// The ELF files of a runner's build (elf_files.hpp), read as data: the object was compiled from
+// a student's file and the runner linked from it, so every header is checked against the file's
+// size before any use. The system's libraries, found by name in the loader's folders, are read
+// the same way.
+#include "elf_files.hpp"
 
 #include <elf.h>
 #include <sys/stat.h>
@@ -42,13 +43,36 @@ std::string string_at(const std::string& data, std::uint64_t offset, std::uint64
   return end ? std::string(start, static_cast<const char*>(end)) : "";
 }
 
-ElfNames read_elf(const std::string& path) {
-  const std::string data = read_at_most(path, kMaxElf);
-  const auto bad = [&](const std::string& why) { return std::runtime_error(path + ": " + why); };
+Elf64_Ehdr read_header(const std::string& data, const std::string& path) {
   Elf64_Ehdr header{};
   if (!read_at(data, 0, header) || std::memcmp(header.e_ident, ELFMAG, SELFMAG) != 0 ||
       header.e_ident[EI_CLASS] != ELFCLASS64)
-    throw bad("not a 64-bit ELF file");
+    throw std::runtime_error(path + ": not a 64-bit ELF file");
+  return header;
+}
+
+// The names of the sections of an ELF file.
+std::vector<std::string> section_names(const std::string& data, const Elf64_Ehdr& header, const std::string& path) {
+  const auto bad = [&](const std::string& why) { return std::runtime_error(path + ": " + why); };
+  if (header.e_shnum == 0) return {};
+  if (header.e_shentsize != sizeof(Elf64_Shdr)) throw bad("unexpected section header size");
+  std::vector<Elf64_Shdr> sections(header.e_shnum);
+  for (std::size_t i = 0; i < sections.size(); ++i)
+    if (!read_at(data, header.e_shoff + i * sizeof(Elf64_Shdr), sections[i])) throw bad("section header out of the file");
+  if (header.e_shstrndx >= sections.size()) throw bad("no table of section names");
+  const Elf64_Shdr& names = sections[header.e_shstrndx];
+  std::vector<std::string> out;
+  for (const Elf64_Shdr& section : sections) {
+    if (section.sh_name >= names.sh_size) throw bad("a section name out of its table");
+    out.push_back(string_at(data, names.sh_offset + section.sh_name, names.sh_size - section.sh_name));
+  }
+  return out;
+}
+
+ElfNames read_elf(const std::string& path) {
+  const std::string data = read_at_most(path, kMaxElf);
+  const auto bad = [&](const std::string& why) { return std::runtime_error(path + ": " + why); };
+  const Elf64_Ehdr header = read_header(data, path);
   if (header.e_phentsize != sizeof(Elf64_Phdr)) throw bad("unexpected program header size");
   std::vector<Elf64_Phdr> segments(header.e_phnum);
   for (std::size_t i = 0; i < segments.size(); ++i)
@@ -102,6 +126,17 @@ bool is_file(const std::string& path) {
 }
 
 }  // namespace
+
+std::string object_refusal(const std::string& object) {
+  const std::string data = read_at_most(object, kMaxElf);
+  const Elf64_Ehdr header = read_header(data, object);
+  if (header.e_type != ET_REL) return "not a relocatable object file";
+  for (const std::string& name : section_names(data, header, object))
+    if (name.rfind(".gnu.lto_", 0) == 0 || name.rfind(".gnu.debuglto_", 0) == 0)
+      return "it carries compiler bytecode (section " + escape_student_text(name.substr(0, 60), false, false) +
+             "), which the linker would compile: an exercise file is compiled by the grader alone";
+  return "";
+}
 
 std::vector<std::string> runtime_files(const std::string& binary) {
   const ElfNames runner = read_elf(binary);

@@ -1,17 +1,18 @@
-// The files a runner needs to start (grader/trusted/runtime_files.hpp), read from its ELF as
-// hostile input: a real program's loader and libraries are found, and a file cut short, an
-// offset past its end or a library name with a slash is refused with the reason, never read
-// past its end.
+// What the grader reads of a runner build's ELF files (grader/trusted/elf_files.hpp), as hostile
+// input: a real program's loader and libraries are found; a file cut short, an offset past its
+// end or a library name with a slash is refused with the reason, never read past its end; an
+// object carrying LTO bytecode is refused before the link.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 
-#include "runtime_files.hpp"
+#include "elf_files.hpp"
 
 namespace {
 
@@ -70,4 +71,18 @@ TEST_CASE("an ELF cut short, pointing past its end or naming a library by a path
   slash[at] = '/';
   CHECK(refusal(write(slash, "slash")).find("not a plain file name") != std::string::npos);
   for (const char* name : {"text", "cut", "far", "slash"}) std::remove((std::string("/tmp/opspace-test-runtime-") + name).c_str());
+}
+
+TEST_CASE("an object carrying GCC's LTO bytecode is refused, a plain object is linked, a program is no object") {
+  // The grader compiles an exercise without -flto: an object with .gnu.lto_ sections was made
+  // to be compiled again by the linker's plugin, in the link stage (docs/grader.md).
+  const std::string source = write("int answer() { return 42; }\n", "object.cpp");
+  const std::string plain = "/tmp/opspace-test-runtime-plain.o", lto = "/tmp/opspace-test-runtime-lto.o";
+  REQUIRE(std::system(("c++ -x c++ -c " + source + " -o " + plain).c_str()) == 0);
+  REQUIRE(std::system(("c++ -x c++ -flto -c " + source + " -o " + lto).c_str()) == 0);
+  CHECK_MESSAGE(opspace::grading::object_refusal(plain).empty(), "a plain object must be accepted");
+  CHECK_MESSAGE(opspace::grading::object_refusal(lto).find("compiler bytecode (section .gnu.lto_") != std::string::npos,
+                "an LTO object must be refused, naming its section");
+  CHECK(opspace::grading::object_refusal("/usr/bin/true") == "not a relocatable object file");
+  for (const std::string& f : {source, plain, lto}) std::remove(f.c_str());
 }
