@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "functions.hpp"
 #include "linked_api.hpp"
 #include "protocol/codec.hpp"
 #include "protocol/protocol.hpp"
@@ -40,30 +41,7 @@ void record(std::function<R(A...)>& slot, Function function) {
 
 grading::Hw2Api recording_api() {
   grading::Hw2Api api = grading::linked_api();
-  auto& a = api.p1a;
-  record(a.degrees_of_freedom, Function::kP1aDegreesOfFreedom);
-  record(a.mass_matrix, Function::kP1aMassMatrix);
-  record(a.task_jacobian, Function::kP1aTaskJacobian);
-  record(a.pseudo_inverse, Function::kP1aPseudoInverse);
-  record(a.weighted_inverse, Function::kP1aWeightedInverse);
-  record(a.inertia_weighted_inverse, Function::kP1aInertiaWeightedInverse);
-  record(a.nullspace_projector, Function::kP1aNullspaceProjector);
-  record(a.inverse_kinematics_step, Function::kP1aInverseKinematicsStep);
-  record(a.split_displacement, Function::kP1aSplitDisplacement);
-  record(api.p1b.control, Function::kP1bControl);
-  record(api.p2.desired_acceleration, Function::kP2DesiredAcceleration);
-  record(api.p2.desired_twist_acceleration, Function::kP2DesiredTwistAcceleration);
-  record(api.p2.control, Function::kP2Control);
-  record(api.p3.motion_selection, Function::kP3MotionSelection);
-  record(api.p3.force_selection, Function::kP3ForceSelection);
-  record(api.p3.control, Function::kP3Control);
-  auto& d = api.p4;
-  record(d.degrees_of_freedom, Function::kP4DegreesOfFreedom);
-  record(d.singular_directions, Function::kP4SingularDirections);
-  record(d.moving_directions, Function::kP4MovingDirections);
-  record(d.rotation_axes, Function::kP4RotationAxes);
-  record(d.singularity_type, Function::kP4SingularityType);
-  record(d.control, Function::kP4Control);
+  grading::for_each_function(api, [](Function function, auto& slot) { record(slot, function); });
   return api;
 }
 

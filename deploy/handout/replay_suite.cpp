@@ -9,6 +9,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "functions.hpp"
 #include "protocol/codec.hpp"
 #include "protocol/protocol.hpp"
 #include "recorded.hpp"
@@ -108,31 +109,17 @@ std::string replay(const std::function<R(A...)>& slot, const recorded::Call& cal
 }
 
 std::string replay(const Hw2Api& api, const recorded::Call& call, std::string& name) {
-  switch (static_cast<Function>(call.function)) {
-    case Function::kP1aDegreesOfFreedom: name = "degrees_of_freedom"; return replay(api.p1a.degrees_of_freedom, call);
-    case Function::kP1aMassMatrix: name = "mass_matrix"; return replay(api.p1a.mass_matrix, call);
-    case Function::kP1aTaskJacobian: name = "task_jacobian"; return replay(api.p1a.task_jacobian, call);
-    case Function::kP1aPseudoInverse: name = "pseudo_inverse"; return replay(api.p1a.pseudo_inverse, call);
-    case Function::kP1aWeightedInverse: name = "weighted_inverse"; return replay(api.p1a.weighted_inverse, call);
-    case Function::kP1aInertiaWeightedInverse: name = "inertia_weighted_inverse"; return replay(api.p1a.inertia_weighted_inverse, call);
-    case Function::kP1aNullspaceProjector: name = "nullspace_projector"; return replay(api.p1a.nullspace_projector, call);
-    case Function::kP1aInverseKinematicsStep: name = "inverse_kinematics_step"; return replay(api.p1a.inverse_kinematics_step, call);
-    case Function::kP1aSplitDisplacement: name = "split_displacement"; return replay(api.p1a.split_displacement, call);
-    case Function::kP1bControl: name = "control"; return replay(api.p1b.control, call);
-    case Function::kP2DesiredAcceleration: name = "desired_acceleration"; return replay(api.p2.desired_acceleration, call);
-    case Function::kP2DesiredTwistAcceleration: name = "desired_twist_acceleration"; return replay(api.p2.desired_twist_acceleration, call);
-    case Function::kP2Control: name = "control"; return replay(api.p2.control, call);
-    case Function::kP3MotionSelection: name = "motion_selection"; return replay(api.p3.motion_selection, call);
-    case Function::kP3ForceSelection: name = "force_selection"; return replay(api.p3.force_selection, call);
-    case Function::kP3Control: name = "control"; return replay(api.p3.control, call);
-    case Function::kP4DegreesOfFreedom: name = "degrees_of_freedom"; return replay(api.p4.degrees_of_freedom, call);
-    case Function::kP4SingularDirections: name = "singular_directions"; return replay(api.p4.singular_directions, call);
-    case Function::kP4MovingDirections: name = "moving_directions"; return replay(api.p4.moving_directions, call);
-    case Function::kP4RotationAxes: name = "rotation_axes"; return replay(api.p4.rotation_axes, call);
-    case Function::kP4SingularityType: name = "singularity_type"; return replay(api.p4.singularity_type, call);
-    case Function::kP4Control: name = "control"; return replay(api.p4.control, call);
-  }
-  throw std::runtime_error("the visible suite names an unknown function");
+  const auto function = static_cast<Function>(call.function);
+  std::string out;
+  bool known = false;
+  for_each_function(api, [&](Function f, const auto& slot) {
+    if (f != function) return;
+    known = true;
+    name = function_name(f);
+    out = replay(slot, call);
+  });
+  if (!known) throw std::runtime_error("the visible suite names an unknown function");
+  return out;
 }
 
 // The recorded suite, read once; `error` says why it could not be read.

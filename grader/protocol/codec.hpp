@@ -4,12 +4,6 @@
 /// rejects a bool that is not 0 or 1: a malformed payload throws DecodeError, whatever sent it.
 #pragma once
 
-#include <opspace/hw2/p1a.hpp>
-#include <opspace/hw2/p1b.hpp>
-#include <opspace/hw2/p2.hpp>
-#include <opspace/hw2/p3.hpp>
-#include <opspace/hw2/p4.hpp>
-
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -17,6 +11,8 @@
 #include <string>
 #include <type_traits>
 #include <vector>
+
+#include "problems.hpp"  // the contracts, whose types travel
 
 namespace opspace::protocol {
 

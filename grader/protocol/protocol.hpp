@@ -13,6 +13,8 @@
 
 #include <cstdint>
 
+#include "problems.hpp"
+
 namespace opspace::protocol {
 
 inline constexpr std::uint32_t kRequestMagic = 0x5152534fu;  ///< "OSRQ"
@@ -40,30 +42,31 @@ enum class Status : std::uint32_t {
   kUnknownFunction = 2,  ///< this runner does not serve that function
 };
 
-/// Every function a student writes, one code each (problem in the high byte).
+/// Every function a student writes, one code each, from the problems' tables (problems.hpp):
+/// kP1aDegreesOfFreedom = 0x1a01 ... kP4Control = 0x0406, the problem's byte high.
 enum class Function : std::uint32_t {
-  kP1aDegreesOfFreedom = 0x1a01,
-  kP1aMassMatrix = 0x1a02,
-  kP1aTaskJacobian = 0x1a03,
-  kP1aPseudoInverse = 0x1a04,
-  kP1aWeightedInverse = 0x1a05,
-  kP1aInertiaWeightedInverse = 0x1a06,
-  kP1aNullspaceProjector = 0x1a07,
-  kP1aInverseKinematicsStep = 0x1a08,
-  kP1aSplitDisplacement = 0x1a09,
-  kP1bControl = 0x1b01,
-  kP2DesiredAcceleration = 0x0201,
-  kP2DesiredTwistAcceleration = 0x0202,
-  kP2Control = 0x0203,
-  kP3MotionSelection = 0x0301,
-  kP3ForceSelection = 0x0302,
-  kP3Control = 0x0303,
-  kP4DegreesOfFreedom = 0x0401,
-  kP4SingularDirections = 0x0402,
-  kP4MovingDirections = 0x0403,
-  kP4RotationAxes = 0x0404,
-  kP4SingularityType = 0x0405,
-  kP4Control = 0x0406,
+#define OPSPACE_FUNCTION_CODE(problem, code, Code, name) Code = code,
+  OPSPACE_FUNCTIONS(OPSPACE_FUNCTION_CODE)
+#undef OPSPACE_FUNCTION_CODE
 };
+
+/// Every function, in the tables' order.
+inline constexpr Function kFunctions[] = {
+#define OPSPACE_FUNCTION_ENUMERATOR(problem, code, Code, name) Function::Code,
+    OPSPACE_FUNCTIONS(OPSPACE_FUNCTION_ENUMERATOR)
+#undef OPSPACE_FUNCTION_ENUMERATOR
+};
+
+/// Each code carries its problem's byte (and a switch over them, functions.hpp's function_name,
+/// refuses two equal codes).
+namespace problem_byte {
+#define OPSPACE_PROBLEM_BYTE(arg, problem, Problem, key, byte, FUNCTIONS) inline constexpr std::uint32_t problem = byte;
+OPSPACE_PROBLEMS(OPSPACE_PROBLEM_BYTE, ~)
+#undef OPSPACE_PROBLEM_BYTE
+}  // namespace problem_byte
+#define OPSPACE_CHECK_CODE(problem, code, Code, name) \
+  static_assert((code) >> 8 == problem_byte::problem, #Code "'s code does not carry its problem's byte");
+OPSPACE_FUNCTIONS(OPSPACE_CHECK_CODE)
+#undef OPSPACE_CHECK_CODE
 
 }  // namespace opspace::protocol

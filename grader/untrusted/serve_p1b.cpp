@@ -3,10 +3,6 @@
 
 namespace opspace::runner {
 
-bool dispatch(protocol::Function function, protocol::Reader& in, protocol::Writer& out) {
-  if (function != protocol::Function::kP1bControl) return false;
-  serve(&hw2::p1b::control, in, out);
-  return true;
-}
+OPSPACE_RUNNER_DISPATCH(OPSPACE_P1B_FUNCTIONS)
 
 }  // namespace opspace::runner

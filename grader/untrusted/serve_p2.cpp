@@ -3,14 +3,6 @@
 
 namespace opspace::runner {
 
-bool dispatch(protocol::Function function, protocol::Reader& in, protocol::Writer& out) {
-  using F = protocol::Function;
-  switch (function) {
-    case F::kP2DesiredAcceleration: serve(&hw2::p2::desired_acceleration, in, out); return true;
-    case F::kP2DesiredTwistAcceleration: serve(&hw2::p2::desired_twist_acceleration, in, out); return true;
-    case F::kP2Control: serve(&hw2::p2::control, in, out); return true;
-    default: return false;
-  }
-}
+OPSPACE_RUNNER_DISPATCH(OPSPACE_P2_FUNCTIONS)
 
 }  // namespace opspace::runner

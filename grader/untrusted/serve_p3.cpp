@@ -3,14 +3,6 @@
 
 namespace opspace::runner {
 
-bool dispatch(protocol::Function function, protocol::Reader& in, protocol::Writer& out) {
-  using F = protocol::Function;
-  switch (function) {
-    case F::kP3MotionSelection: serve(&hw2::p3::motion_selection, in, out); return true;
-    case F::kP3ForceSelection: serve(&hw2::p3::force_selection, in, out); return true;
-    case F::kP3Control: serve(&hw2::p3::control, in, out); return true;
-    default: return false;
-  }
-}
+OPSPACE_RUNNER_DISPATCH(OPSPACE_P3_FUNCTIONS)
 
 }  // namespace opspace::runner

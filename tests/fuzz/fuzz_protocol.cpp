@@ -1,12 +1,13 @@
 // libFuzzer target: the grader's reading of what a runner sends (tests/graded/
 // answers.cpp, student_text.cpp's student_line()): arbitrary bytes as the answer to a request.
-// Input: one byte choosing the function asked (of the 22), then a 16-byte answer header, then
-// the payload. check_answer() must accept only a header for request 1 with the exact size of
-// that function's value (or an exception text of at most 400 bytes); decode_answer() must
-// decode every payload of the right size or refuse it with DecodeError (a true/false byte that
-// is neither 0 nor 1); an exception text, as the report shows it, must be one line of printable
-// ASCII (everything else escaped) within its limit. Anything else (another exception, a sanitizer report, a
-// hang, an allocation the size of a header's claim) is a finding.
+// Input: one byte choosing the function asked (of protocol::kFunctions, every function in
+// the problems' tables' order), then a 16-byte answer header, then the payload.
+// check_answer() must accept only a header for request 1 with the exact size of that
+// function's value (or an exception text of at most 400 bytes); decode_answer() must decode
+// every payload of the right size or refuse it with DecodeError (a true/false byte that is
+// neither 0 nor 1); an exception text, as the report shows it, must be one line of printable
+// ASCII (everything else escaped) within its limit. Anything else (another exception, a
+// sanitizer report, a hang, an allocation the size of a header's claim) is a finding.
 // Seeds: tests/fuzz/seeds/protocol (well-formed answers of several functions).
 #include <cstddef>
 #include <cstdint>
@@ -24,16 +25,7 @@
 namespace {
 
 using opspace::protocol::Function;
-
-constexpr Function kFunctions[] = {
-    Function::kP1aDegreesOfFreedom,   Function::kP1aMassMatrix,          Function::kP1aTaskJacobian,
-    Function::kP1aPseudoInverse,      Function::kP1aWeightedInverse,     Function::kP1aInertiaWeightedInverse,
-    Function::kP1aNullspaceProjector, Function::kP1aInverseKinematicsStep, Function::kP1aSplitDisplacement,
-    Function::kP1bControl,            Function::kP2DesiredAcceleration,  Function::kP2DesiredTwistAcceleration,
-    Function::kP2Control,             Function::kP3MotionSelection,      Function::kP3ForceSelection,
-    Function::kP3Control,             Function::kP4DegreesOfFreedom,     Function::kP4SingularDirections,
-    Function::kP4MovingDirections,    Function::kP4RotationAxes,         Function::kP4SingularityType,
-    Function::kP4Control};
+using opspace::protocol::kFunctions;
 
 void require(bool ok, const char* what) {
   if (ok) return;

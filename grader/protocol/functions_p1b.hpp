@@ -1,0 +1,10 @@
+/// @file functions_p1b.hpp
+/// Problem 1b's student functions (lib/include/opspace/hw2/p1b.hpp), one row each: the only
+/// list of them. problems.hpp says what is derived from the rows and how; functions_p1a.hpp
+/// what a row holds.
+#pragma once
+
+#include <opspace/hw2/p1b.hpp>
+
+#define OPSPACE_P1B_FUNCTIONS(F) \
+  F(p1b, 0x1b01, kP1bControl, control) /* the torques of each PART */

@@ -1,0 +1,12 @@
+/// @file functions_p2.hpp
+/// Problem 2's student functions (lib/include/opspace/hw2/p2.hpp), one row each: the only list
+/// of them. problems.hpp says what is derived from the rows and how; functions_p1a.hpp what a
+/// row holds.
+#pragma once
+
+#include <opspace/hw2/p2.hpp>
+
+#define OPSPACE_P2_FUNCTIONS(F)                                                                            \
+  F(p2, 0x0201, kP2DesiredAcceleration, desired_acceleration)            /* 2(a): xddot_d(t) */            \
+  F(p2, 0x0202, kP2DesiredTwistAcceleration, desired_twist_acceleration) /* 2(b): E^+ xddot_d */           \
+  F(p2, 0x0203, kP2Control, control)                                     /* 2(c): the tracking law */

@@ -1,0 +1,12 @@
+/// @file functions_p3.hpp
+/// Problem 3's student functions (lib/include/opspace/hw2/p3.hpp), one row each: the only list
+/// of them. problems.hpp says what is derived from the rows and how; functions_p1a.hpp what a
+/// row holds.
+#pragma once
+
+#include <opspace/hw2/p3.hpp>
+
+#define OPSPACE_P3_FUNCTIONS(F)                                                              \
+  F(p3, 0x0301, kP3MotionSelection, motion_selection) /* 3(a): Omega */                      \
+  F(p3, 0x0302, kP3ForceSelection, force_selection)   /* 3(a): Omega-bar */                  \
+  F(p3, 0x0303, kP3Control, control)                  /* 3(b): the unified motion and force law */

@@ -1,0 +1,15 @@
+/// @file functions_p4.hpp
+/// Problem 4's student functions (lib/include/opspace/hw2/p4.hpp), one row each: the only list
+/// of them. problems.hpp says what is derived from the rows and how; functions_p1a.hpp what a
+/// row holds.
+#pragma once
+
+#include <opspace/hw2/p4.hpp>
+
+#define OPSPACE_P4_FUNCTIONS(F)                                                                          \
+  F(p4, 0x0401, kP4DegreesOfFreedom, degrees_of_freedom)   /* i. the rank of Jv */                       \
+  F(p4, 0x0402, kP4SingularDirections, singular_directions) /* ii. u with u^T Jv = 0 */                  \
+  F(p4, 0x0403, kP4MovingDirections, moving_directions)     /* iii. directions the tip can move along */ \
+  F(p4, 0x0404, kP4RotationAxes, rotation_axes)             /* iii. axes the tip can rotate about */     \
+  F(p4, 0x0405, kP4SingularityType, singularity_type)       /* iv. Type I or Type II */                  \
+  F(p4, 0x0406, kP4Control, control)                        /* v. the control law near the singularity */
