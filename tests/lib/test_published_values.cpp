@@ -53,6 +53,14 @@ double worst_six_digit(const Eigen::MatrixXd& computed, const Eigen::MatrixXd& p
   return worst;
 }
 
+// Checks `computed` against `published` to its six printed digits, and reports the largest
+// difference under `what`.
+void check_six_digits(const char* what, const Eigen::MatrixXd& computed, const Eigen::MatrixXd& published) {
+  double max_abs = 0.0;
+  CHECK_MESSAGE(worst_six_digit(computed, published, max_abs) < 1.0, what << " differs beyond the published digits");
+  MESSAGE(what << ": largest difference " << max_abs);
+}
+
 /// The same for numbers printed to 4 decimals (the toolbox's tests): half of 1e-4, with the
 /// same margin for the decimal's rounding.
 constexpr double kFourDecimals = 0.5e-4 * (1 + 1e-9);
@@ -121,9 +129,7 @@ TEST_CASE("the rebuilt sai2 rpsprbot's Jw matches sai2-model's at the spherical 
   const Eigen::MatrixXd published = row_major(3, 7, {1, 0, 0.804738, -0.310617, 0.505879, 0, -0.310617,  //
                                                      0, 0, 0.557506, 0.688194, -0.464302, 0, 0.688194,   //
                                                      0, 0, -0.203923, 0.655672, 0.726987, 0, 0.655672});
-  double max_abs = 0.0;
-  CHECK(worst_six_digit(robot.at.J0.bottomRows(3), published, max_abs) < 1.0);
-  MESSAGE("sai2 Jw: largest difference " << max_abs);
+  check_six_digits("sai2 Jw", robot.at.J0.bottomRows(3), published);
 }
 
 TEST_CASE("the 6x6 task inertia of the sai2 rpsprbot matches sai2-model's published Lambda") {
@@ -140,9 +146,7 @@ TEST_CASE("the 6x6 task inertia of the sai2 rpsprbot matches sai2-model's publis
        -1.4949,   1.21213,   2.05066,   1.52106,   2.4057,   -1.01646,  //
        0.525617,  -1.48404,  -0.684001, -1.12447,  -1.01646, 1.0047});
   CHECK(ts.rank == 6);
-  double max_abs = 0.0;
-  CHECK(worst_six_digit(ts.Lambda, published, max_abs) < 1.0);
-  MESSAGE("sai2 Lambda (6x6): largest difference " << max_abs);
+  check_six_digits("sai2 Lambda (6x6)", ts.Lambda, published);
 }
 
 TEST_CASE("the 7x6 dynamically consistent inverse of the sai2 rpsprbot matches sai2-model's Jbar") {
@@ -159,9 +163,7 @@ TEST_CASE("the 7x6 dynamically consistent inverse of the sai2 rpsprbot matches s
        -0.0796136, 0.209443,  0.189164,  0.754595,  -0.231231, 0.5911,     //
        0.624475,   -0.571149, 0.576222,  -0.409894, -0.10998,  0.315857,   //
        -1.0626,    -0.448799, 0.452785,  -0.322088, 1.40587,   0.667037});
-  double max_abs = 0.0;
-  CHECK(worst_six_digit(ts.Jbar, published, max_abs) < 1.0);
-  MESSAGE("sai2 Jbar (7x6): largest difference " << max_abs);
+  check_six_digits("sai2 Jbar (7x6)", ts.Jbar, published);
 }
 
 TEST_CASE("the 7x7 null-space projector of the sai2 rpsprbot matches sai2-model's N") {
@@ -178,9 +180,7 @@ TEST_CASE("the 7x7 null-space projector of the sai2 rpsprbot matches sai2-model'
        -0.138096, -0.143784, 0, -0.0112983, 0, 0, 0,  //
        -0.651376, -0.678205, 0, -0.0532922, 0, 0, 0,  //
        -0.51184,  -0.532922, 0, -0.0418761, 0, 0, 0});
-  double max_abs = 0.0;
-  CHECK(worst_six_digit(ts.N, published, max_abs) < 1.0);
-  MESSAGE("sai2 N (7x7): largest difference " << max_abs);
+  check_six_digits("sai2 N (7x7)", ts.N, published);
 }
 
 TEST_CASE("the sai2 2R arm's task inertia through the pseudo-inverse matches sai2-model's, singular and not") {
