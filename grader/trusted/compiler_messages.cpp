@@ -1,5 +1,6 @@
 #include "compiler_messages.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,10 +15,16 @@ namespace fs = std::filesystem;
 std::string read_at_most(const std::string& path, std::size_t limit) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + path);
+  // In pieces, never more than the file holds plus one piece: a limit is a bound, not a size
+  // (one buffer of the limit's size cost 1.3 s of zeroed pages per 512 MiB ELF bound).
+  constexpr std::size_t kPiece = 1u << 16;
   std::string text;
-  text.resize(limit + 1);
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
+  while (in && text.size() <= limit) {
+    const std::size_t before = text.size();
+    text.resize(before + std::min(kPiece, limit + 1 - before));
+    in.read(text.data() + before, static_cast<std::streamsize>(text.size() - before));
+    text.resize(before + static_cast<std::size_t>(in.gcount()));
+  }
   return text;
 }
 
