@@ -129,6 +129,34 @@ std::string directions(const opspace::hw2::p4::Directions& d) {
   return s.str();
 }
 
+/// The live page's ghost (docs/live.md): each problem 1b run's tip path, one point every
+/// kPathEvery samples, in metres to the nanometre.
+void tip_paths(std::ostream& out, const Runs& runs) {
+  constexpr std::size_t kPathEvery = 20;  // 20 ms at the 1 ms step: 501 points per 10 s run
+  const double step = runs.p1b.begin()->second.samples.at(kPathEvery).t;
+  out << "/// solutions/' tip path (m) of problem 1b under `part`, unpushed, one point every kP1bTipPathStep s\n"
+      << "/// from t = 0: the live page's ghost.\n"
+      << "inline constexpr double kP1bTipPathStep = " << step << ";\n"
+      << "inline std::vector<Eigen::Vector3d> p1b_tip_path(opspace::hw2::p1b::Part part) {\n"
+      << "  const auto points = [](const auto& xyz) {\n"
+      << "    std::vector<Eigen::Vector3d> path;\n"
+      << "    for (std::size_t i = 0; i + 2 < std::size(xyz); i += 3) path.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);\n"
+      << "    return path;\n  };\n";
+  std::ostringstream xyz;
+  xyz.precision(9);
+  for (const auto& [part, r] : runs.p1b) {
+    if (part == Part::kTipPdWithoutJointDamping) continue;  // not a law of the live page
+    xyz.str("");
+    for (std::size_t k = 0; k < r.samples.size(); k += kPathEvery) {
+      const Eigen::Vector3d& x = r.samples[k].x;
+      xyz << (k ? (k % (4 * kPathEvery) ? ", " : ",\n      ") : "") << x(0) << ", " << x(1) << ", " << x(2);
+    }
+    out << "  if (part == static_cast<opspace::hw2::p1b::Part>(" << static_cast<int>(part) << ")) {\n"
+        << "    static const double xyz[] = {\n      " << xyz.str() << "};\n    return points(xyz);\n  }\n";
+  }
+  out << "  return {};\n}\n\n";
+}
+
 }  // namespace
 
 void write_header(const Runs& runs, const std::string& path) {
@@ -136,6 +164,8 @@ void write_header(const Runs& runs, const std::string& path) {
   out << "// Generated at build time by hw2-reference (apps/reference_header.cpp): what solutions/ does on each\n"
          "// scenario at the programs' default durations, exactly. Do not edit.\n"
          "#pragma once\n\n"
+         "#include <iterator>\n"
+         "#include <vector>\n\n"
          "#include <opspace/hw2/p4.hpp>\n"
          "#include <opspace/scenarios.hpp>\n\n"
          "namespace reference {\n\n";
@@ -151,6 +181,7 @@ void write_header(const Runs& runs, const std::string& path) {
   }
   out << "/// solutions/' run of `part`.\n";
   summary_function(out, "p1b(opspace::hw2::p1b::Part part)", "opspace::scenarios::p1b::Summary", parts);
+  tip_paths(out, runs);
   out << "/// solutions/' run of problem 2.\n";
   summary_function<p2::Summary>(out, "p2()", "opspace::scenarios::p2::Summary", {{"", runs.p2.summary}});
   out << "/// solutions/' run of problem 3.\n";

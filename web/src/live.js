@@ -6,8 +6,8 @@
 // second) and sends the person's commands (pause, reset, speed, law, gains, pushes with the
 // mouse) as JSON to POST /command. The protocol is in docs/live.md ("Protocol").
 // This file puts the page together; its parts are in live/: common.js (the test hook
-// window.opspaceLive), layout.js, plots.js, commands.js, view.js, push.js, controls.js and
-// stream.js.
+// window.opspaceLive), layout.js, plots.js, commands.js, view.js (with ghost.js), push.js,
+// controls.js and stream.js.
 import { api } from './live/common.js';
 import { commandQueue } from './live/commands.js';
 import { wireControls } from './live/controls.js';

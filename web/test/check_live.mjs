@@ -6,7 +6,9 @@
 // the arm's pixels change; reset brings t back near 0 and the start pose (and the gains back);
 // a mouse drag on body 2 (the PUMA's forearm, at the elbow) pulls it with a force shown in
 // newtons and moves it away from where the same run goes unpushed; pause holds t and the pose;
-// the law switch reaches the frames and the plots keep drawing; a refused command is shown; no
+// the law switch reaches the frames and the plots keep drawing; problem 1b's page says what the
+// physics does (its note), shows the measured tip offset beside the one predicted for the push,
+// and draws the reference's tip as a ghost that follows the law; a refused command is shown; no
 // console errors; SIGINT ends the program with status 0 within 3 s, its port closed, and the
 // page says that it has stopped. The screenshot is taken during the drag.
 // Exit 0: all passed; 1: a check failed; 77: Chromium or playwright-core is missing (ctest
@@ -105,6 +107,14 @@ try {
   /// Sends nothing itself: waits for the frames to apply the page's last command.
   const applied = () => frameWhere(new Function('f', 'return f.command >= window.opspaceLive.lastSent'));
 
+  // Problem 1b's page: its note, the ghost's paths (one per law) and its legend entry.
+  const note = await page.locator('#note').textContent().catch(() => '');
+  check(/Jv A\^-1 Je\^T F \/ kpx/.test(note), `the page says what a push does to the tip: '${note.slice(0, 90)}...'`);
+  const ghost = data.ghost;
+  check(ghost && ghost.paths.length === data.laws.length && ghost.paths.every((p) => p.length >= 6 && p.length % 3 === 0) &&
+    (await page.locator('#ghost-key').isVisible()),
+    `the page has the reference's tip path for each of its ${data.laws.length} laws (${ghost ? ghost.paths.map((p) => p.length / 3).join(', ') : 'none'} points) and a legend entry for it`);
+
   // Frames: rate and simulated time.
   const a = await state();
   await sleep(2000);
@@ -189,6 +199,17 @@ try {
   // The drag, in the run that began at the reset: press on body 2 near its origin (the elbow)
   // and pull up and right by 150 px.
   await frameWhere(new Function('f', `return f.t > ${PUSH_FROM}`), 20000);
+  // Unpushed, this program (the reference, PART3) runs the reference's own run, which the ghost
+  // draws: its ball is where the tip is. Its points, every 20 ms, are that run's tip to 1e-9 m;
+  // between them the chord errs by at most |ddx| h^2 / 8, with |ddx| <= 17^2 x 2.3 mm (the tip
+  // starts 2.3 mm off, the task's fast pole is 17 /s) = 0.66 m/s^2: 0.03 mm. Hence 0.1 mm.
+  const beside = await page.evaluate(() => {
+    const api = window.opspaceLive, g = api.ghost;
+    const f = g && api.trace.find((t) => t.t === g.t);
+    return g && f ? { g, x: f.markers.x } : null;
+  });
+  const apart = beside && beside.g.visible ? Math.hypot(...beside.g.position.map((v, i) => v - beside.x[i])) : Infinity;
+  check(apart < 1e-4, `unpushed, the ghost's ball is on the tip: ${(1000 * apart).toFixed(4)} mm apart at t = ${beside && beside.g.t.toFixed(3)} s (< 0.1 mm)`);
   const pressed = Date.now();
   const spot = await page.evaluate((body) => {
     const api = window.opspaceLive, o = api.screenOf(body);
@@ -217,6 +238,11 @@ try {
     const labelText = (await label.isVisible()) ? await label.textContent() : '(hidden)';
     check(force > 1 && /^\d+\.\d N$/.test(labelText), `the spring pulls with ${force.toFixed(1)} N, labelled '${labelText}'`);
     check(pulled.push && pulled.push.body === BODY && pulled.push.target.every(Number.isFinite), 'the frames show the pulled point and the mouse point');
+    // The tip error plot's keys: the measured offset beside the one predicted for this push.
+    const shown = async () => Promise.all(['#value-0-0', '#value-0-1'].map(async (id) => Number(await page.locator(id).textContent())));
+    const [measured, predicted] = await shown();
+    check(measured > 1 && predicted > 1 && pulled.push !== null,
+      `while pulled, the page shows the tip ${measured} mm off, and predicts ${predicted} mm for the push (|Jv A^-1 Je^T F| / kpx; > 1 mm each)`);
     await page.screenshot({ path: screenshot });
     console.log(`screenshot: ${screenshot}`);
     await page.mouse.up();
@@ -224,6 +250,9 @@ try {
     // The page hides the label in its next animation frame, which may follow the frame seen here.
     const hidden = await label.waitFor({ state: 'hidden', timeout: 2000 }).then(() => true, () => false);
     check(released !== null && hidden, 'releasing the mouse ends the push and hides the label');
+    const zero = await page.waitForFunction(() => Number(document.getElementById('value-0-1').textContent) === 0, null, { timeout: 5000 })
+      .then(() => true, () => false);
+    check(zero, 'released, the predicted offset goes back to 0 mm');
   }
   /// The frames of the run since the last reset, [t, poses] each.
   const thisRun = () => page.evaluate(() => {
@@ -297,6 +326,9 @@ try {
     await sleep(1000);
     const s1 = await page.evaluate(() => ({ draws: window.opspaceLive.plotDraws, samples: window.opspaceLive.samples, t: window.opspaceLive.lastFrame.t, error: window.opspaceLive.lastFrame.error }));
     check(switched !== null, `the law select switches the frames' law from ${from} to ${to} (${data.laws[to]})`);
+    const ghostLaw = await page.waitForFunction((law) => window.opspaceLive.ghost && window.opspaceLive.ghost.law === law, to, { timeout: 5000 })
+      .then(() => to, () => page.evaluate(() => window.opspaceLive.ghost && window.opspaceLive.ghost.law));
+    check(ghostLaw === to, `the ghost draws the reference's path of the law in force (law ${ghostLaw})`);
     check(s1.t > s0.t && s1.samples > s0.samples && s1.draws > s0.draws,
       `after the switch the run goes on and the plots keep drawing (${s1.samples - s0.samples} samples, ${s1.draws - s0.draws} redraws in 1 s)`);
     check(s1.error === '', `no error under ${data.laws[to]}${s1.error ? `: ${s1.error}` : ''}`);

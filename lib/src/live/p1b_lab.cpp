@@ -1,5 +1,6 @@
 // Problem 1b live (live/labs.hpp).
 #include "opspace/live/labs.hpp"
+#include "opspace/live/p1b_offset.hpp"
 
 namespace opspace::live {
 
@@ -23,7 +24,13 @@ P1bLab::P1bLab(Part part, p1b::Controller control)
     : control_(std::move(control)), x_d_(p1b::goal(0.0, p1b::initial_q()).x_d) {
   info_.program = "hw2-p1";
   info_.title = "hw2-p1: problem 1b on the PUMA 560, live";
-  info_.subtitle = "push the elbow: under PART3 the tip holds, under PART2 it wanders";
+  info_.subtitle = "unpushed, PART3's tip holds while joint 2 moves and PART2's wanders; a push moves it under every law";
+  info_.note =
+      "PART3's projector keeps the controller's own joint task from accelerating the tip: unpushed, its tip "
+      "stays within a millimetre of x_d while joint 2 swings; PART2's wanders by centimetres to decimetres. "
+      "A push is no controller torque: it reaches the tip as Jv A^-1 Je^T F, and the tip's PD holds it at the "
+      "static offset Jv A^-1 Je^T F / kpx (orange, for the push of the moment; the tip follows it about "
+      "kvx/kpx = 0.4 s late while the arm moves), undone when you let go. A stiffer kpx makes it smaller.";
   for (const Part p : kLaws) info_.laws.push_back(p1b::describe(p));
   info_.law = law_of(part);
   const hw2::p1b::Goal g = p1b::goal(0.0, p1b::initial_q());
@@ -31,7 +38,8 @@ P1bLab::P1bLab(Part part, p1b::Controller control)
   info_.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},
                  {"kvx", "kv, tip (1/s)", 2.0, 60.0, g.kvx},
                  {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
-  info_.plots = {{"tip error", "mm", {{"|x - x_d|", "#e74c3c"}}},
+  info_.plots = {{"tip error", "mm",
+                  {{"measured |x - x_d|", "#e74c3c"}, {"predicted |Jv A^-1 Je^T F| / kpx", "#e67e22"}}},
                  {"joint 2", "rad", {{"q2", "#2c7be5"}, {"q2_d", "#7f8c8d"}}}};
   info_.markers = {{"x_d", "target x_d", "#e74c3c", 0.02}, {"x", "tip x", "#2c7be5", 0.012}};
   reset();
@@ -41,9 +49,25 @@ std::unique_ptr<p1b::Loop> P1bLab::make_loop() const { return std::make_unique<p
 
 void P1bLab::set_law(int law) { loop_->part = kLaws[law]; }
 
+void P1bLab::set_push_torque(const Eigen::Ref<const Eigen::VectorXd>& torque) {
+  if (torque.isZero(0.0)) {
+    predicted_offset_.setZero();
+    return;
+  }
+  const hw2::p1b::State& s = loop_->state();
+  hw2::p1b::Goal g = p1b::goal(s.t, s.q);
+  loop_->gains.apply(g);  // the kpx of this tick
+  predicted_offset_ = p1b_static_tip_offset(s, torque, g.kpx);
+}
+
+void P1bLab::set_reference(double step, const std::function<std::vector<Eigen::Vector3d>(Part)>& path) {
+  info_.ghost = Ghost{"reference tip (solutions/, this law, unpushed)", "#8e44ad", step, {}};
+  for (const Part p : kLaws) info_.ghost.paths.push_back(path(p));
+}
+
 void P1bLab::plot_values(std::vector<double>& values) const {
   const p1b::Sample& s = result_.samples.back();
-  values = {1000.0 * (s.x - x_d_).norm(), s.q(1), s.q2_desired};
+  values = {1000.0 * (s.x - x_d_).norm(), 1000.0 * predicted_offset_.norm(), s.q(1), s.q2_desired};
 }
 
 void P1bLab::marker_positions(std::vector<Eigen::Vector3d>& positions) const {

@@ -33,7 +33,9 @@ Eigen::Vector3d spring_force(const Spring& spring, double mass, const Eigen::Vec
   return F;
 }
 
-Pusher::Pusher(const Model& model) : model_(model), data_(model), J0_(6, model.dof()), Jv_(3, model.dof()) {}
+Pusher::Pusher(const Model& model)
+    : model_(model), data_(model), J0_(6, model.dof()), Jv_(3, model.dof()),
+      joint_torque_(Eigen::VectorXd::Zero(model.dof())) {}
 
 PushForce Pusher::force(const Spring& spring, const Eigen::Ref<const Eigen::VectorXd>& q,
                         const Eigen::Ref<const Eigen::VectorXd>& qdot, int body, const Eigen::Vector3d& local,
@@ -50,6 +52,7 @@ PushForce Pusher::force(const Spring& spring, const Eigen::Ref<const Eigen::Vect
   push.point = point_position(model_, data_, frame, local);
   push.mass = effective_mass(Jv_, data_.A);
   push.force = spring_force(spring, push.mass, push.point, Jv_ * qdot, target);
+  joint_torque_.noalias() = Jv_.transpose() * push.force;
   return push;
 }
 

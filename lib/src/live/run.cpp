@@ -56,6 +56,18 @@ Json robot_json(Lab& lab) {
   return Json{{"robot", j["robot"]}, {"bodies", j["bodies"]}, {"shapes", j["shapes"]}};
 }
 
+// The reference's paths, each [x, y, z, x, y, z, ...], or null.
+Json ghost_json(const Ghost& ghost) {
+  if (ghost.paths.empty()) return nullptr;
+  Json paths = Json::array();
+  for (const std::vector<Eigen::Vector3d>& path : ghost.paths) {
+    Json xyz = Json::array();
+    for (const Eigen::Vector3d& p : path) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+    paths.push_back(std::move(xyz));
+  }
+  return Json{{"label", ghost.label}, {"color", ghost.color}, {"step", ghost.step}, {"paths", paths}};
+}
+
 std::string escape_script(std::string text) {
   // Inlined in <script>: "</" would end the element early (JSON and JS both accept "<\/").
   for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.insert(at + 1, "\\");
@@ -74,6 +86,7 @@ std::string page(Lab& lab, double max_force) {
   Json data = robot_json(lab);
   data["title"] = info.title;
   data["subtitle"] = info.subtitle;
+  data["note"] = info.note;
   data["view"] = Json::array({info.view.x(), info.view.y(), info.view.z()});
   data["laws"] = info.laws;
   data["law"] = info.law;
@@ -97,6 +110,7 @@ std::string page(Lab& lab, double max_force) {
   data["max_force"] = max_force;
   data["dt"] = lab.simulation().settings().dt;
   data["window"] = info.window;
+  data["ghost"] = ghost_json(info.ghost);
 
   std::ifstream in(viewer_path());
   std::stringstream viewer;

@@ -94,6 +94,7 @@ void Session::reset() {
   gains_.clear();
   for (const Gain& g : info.gains) gains_.push_back(g.value);
   pusher_ = std::make_unique<Pusher>(lab_.simulation().model());
+  push_torque_ = Eigen::VectorXd::Zero(lab_.simulation().model().dof());
   error_.clear();
   release();
   samples_.clear();
@@ -104,6 +105,7 @@ void Session::reset() {
 void Session::release() {
   pushing_ = false;
   push_force_ = PushForce{};
+  push_torque_.setZero();
 }
 
 double Session::time() const { return std::as_const(lab_).simulation().time(); }
@@ -117,7 +119,9 @@ void Session::step(bool advance) {
     if (pushing_) {
       push_force_ = pusher_->force(spring_, sim.q(), sim.qdot(), push_.body, push_.point, push_.target);
       sim.push(push_.body, push_force_.force, push_force_.point);
+      push_torque_ = pusher_->joint_torque();
     }
+    lab_.set_push_torque(push_torque_);
     if (csv_) {
       std::vector<double> row = lab_.csv_row();
       const Eigen::Vector3d& f = push_force_.force;

@@ -22,6 +22,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px system-ui, sa
 #side { position: absolute; right: 0; top: 0; bottom: 0; width: ${SIDE}px; overflow-y: auto; padding: 8px 10px; box-sizing: border-box; background: #fff; border-left: 1px solid #d6d8de; }
 #side h2 { font-size: 13px; margin: 10px 0 4px 0; }
 #side p { margin: 4px 0; color: #555; line-height: 1.35; }
+#note { color: #1d2330; background: #fdf2e9; border-left: 3px solid #e67e22; padding: 4px 6px; }
 .buttons { display: flex; gap: 6px; align-items: center; flex-wrap: wrap; }
 .row { display: grid; grid-template-columns: 96px 1fr 64px; gap: 6px; align-items: center; margin: 2px 0; }
 .row input[type=range], .row select { width: 100%; }
@@ -31,7 +32,8 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px system-ui, sa
 .plot { margin: 6px 0; }
 .plot .title { font-weight: 600; }
 .plot .keys { font-size: 11px; color: #444; }
-.plot .keys span { margin-right: 10px; white-space: nowrap; }
+.plot .keys > span { margin-right: 10px; white-space: nowrap; }
+.plot .keys .value { margin-left: 4px; font: 600 11px ui-monospace, monospace; }
 .plot canvas { display: block; width: 100%; height: ${PLOT_HEIGHT}px; background: #fafbfc; border: 1px solid #e1e3e8; border-radius: 3px; box-sizing: border-box; }
 #no-webgl { padding: 2em; }
 `;
@@ -57,6 +59,11 @@ export function buildPage(data) {
   for (const m of data.markers || []) {
     const li = el('li');
     li.append(el('span', { class: 'swatch', style: `background:${m.color}` }), document.createTextNode(m.label || m.name));
+    legend.append(li);
+  }
+  if (data.ghost) {
+    const li = el('li', { id: 'ghost-key' });
+    li.append(el('span', { class: 'swatch', style: `background:${data.ghost.color};opacity:0.5` }), document.createTextNode(data.ghost.label));
     legend.append(li);
   }
   hud.append(legend);
@@ -100,6 +107,7 @@ export function buildPage(data) {
   }
   const status = el('div', { id: 'status' });
   side.append(status, el('p', {}, 'Drag the arm to pull it with a spring; drag elsewhere to turn the view, wheel to zoom.'));
+  if (data.note) side.append(el('p', { id: 'note' }, data.note));
   const plots = buildPlots(data, side);
   document.body.append(stage, hud, stopped, pushLabel, side);
 

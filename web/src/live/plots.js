@@ -6,21 +6,24 @@ export function buildPlots(data, parent) {
   const window_ = data.window || 10;
   const plots = [];
   let column = 1;  // samples are [t, values of plot 0's series, plot 1's, ...]
-  for (const p of data.plots || []) {
+  (data.plots || []).forEach((p, i) => {
     const box = el('div', { class: 'plot' });
     box.append(el('div', { class: 'title' }, p.unit ? `${p.title} (${p.unit})` : p.title));
     const keys = el('div', { class: 'keys' });
-    for (const s of p.series) {
+    // Each series' latest value beside its name: id value-PLOT-SERIES.
+    const values = p.series.map((s, k) => {
       const key = el('span');
-      key.append(el('span', { class: 'swatch', style: `background:${s.color}` }), document.createTextNode(s.label));
+      const value = el('span', { class: 'value', id: `value-${i}-${k}` }, '-');
+      key.append(el('span', { class: 'swatch', style: `background:${s.color}` }), document.createTextNode(s.label), value);
       keys.append(key);
-    }
+      return value;
+    });
     const canvas = el('canvas');
     box.append(keys, canvas);
     parent.append(box);
-    plots.push({ ...p, canvas, first: column });
+    plots.push({ ...p, canvas, values, first: column });
     column += p.series.length;
-  }
+  });
   let rows = [];
   const minStep = window_ / 1500;  // thinning: more points than pixels are not drawn anyway
   function add(samples) {
@@ -38,7 +41,9 @@ export function buildPlots(data, parent) {
   function clear() { rows = []; }
   function draw(t) {
     const end = Math.max(window_, t), start = end - window_;
+    const latest = rows[rows.length - 1];
     for (const p of plots) {
+      p.values.forEach((value, k) => { value.textContent = latest ? trimmed(latest[p.first + k]) : '-'; });
       const ratio = window.devicePixelRatio || 1;
       const w = Math.max(1, Math.round(p.canvas.clientWidth * ratio)), h = Math.max(1, Math.round(p.canvas.clientHeight * ratio));
       if (p.canvas.width !== w || p.canvas.height !== h) { p.canvas.width = w; p.canvas.height = h; }

@@ -3,6 +3,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { baseScene, buildRobot, el, setPose } from '../scene.js';
 import { SIDE } from './common.js';
+import { buildGhost } from './ghost.js';
 
 /// The view in `page.stage`. Its `controls` (OrbitControls) come with startOrbit(), once the
 /// push's listeners are on the canvas; `shown` is the frame drawn (set by the page's loop).
@@ -26,6 +27,7 @@ export function buildView(data, page) {
     scene.add(mesh);
     markers[m.name] = mesh;
   }
+  const ghost = buildGhost(data, scene);
   // The push: a spring from the pulled point to the mouse's point, and a ball at the mouse.
   const springGeometry = new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(), new THREE.Vector3()]);
   const spring = new THREE.Line(springGeometry, new THREE.LineBasicMaterial({ color: 0xd35400 }));
@@ -100,6 +102,7 @@ export function buildView(data, page) {
         mesh.visible = Array.isArray(at) && at.length === 3;
         if (mesh.visible) mesh.position.set(at[0], at[1], at[2]);
       }
+      if (ghost) ghost.show(frame);
       const push = frame.push;
       spring.visible = handle.visible = !!push;
       if (push) {

@@ -42,11 +42,22 @@ struct MarkerInfo {
   double radius = 0.02;  ///< sphere radius (m)
 };
 
+/// A reference's run drawn faintly beside the live one (docs/live.md, "The ghost"): the tip path
+/// of each law, unpushed, from t = 0, sampled every `step` s; the page shows the path of the law
+/// in force and a ball where it is at the run's time.
+struct Ghost {
+  std::string label;  ///< legend entry
+  std::string color;  ///< "#rrggbb"
+  double step = 0.0;  ///< seconds between points
+  std::vector<std::vector<Eigen::Vector3d>> paths;  ///< per law (info().laws' order); empty: none
+};
+
 /// What the page shows of a problem, fixed for a session.
 struct LabInfo {
   std::string program;   ///< e.g. "hw2-p1": the log's and the terminal's name
   std::string title;     ///< the page's heading
   std::string subtitle;  ///< one line under it
+  std::string note;      ///< what the physics does, in a few sentences (empty: none)
   std::vector<std::string> laws;  ///< the laws the page can switch between (one: no switch)
   int law = 0;                    ///< the law at the start and after a reset
   std::vector<Gain> gains;        ///< sliders
@@ -54,6 +65,7 @@ struct LabInfo {
   std::vector<MarkerInfo> markers;  ///< targets drawn in the scene
   Eigen::Vector3d view = Eigen::Vector3d(1.0, -1.0, 0.7);  ///< camera direction from the scene
   double window = 10.0;           ///< seconds of history the plots show
+  Ghost ghost;                    ///< a reference's paths, or none
 };
 
 /// A problem's closed loop, driven one tick at a time by a live Session. Between ticks the
@@ -76,6 +88,9 @@ class Lab {
   /// Observes the state at the simulation's time, runs the controller and checks its torques
   /// (throws what the offline run throws); returns the torques to apply for the next step.
   virtual const Eigen::VectorXd& tick() = 0;
+  /// The push applied after this tick as joint torques, Je^T F (zero when there is none), for
+  /// what the page predicts of it; it changes nothing in the run.
+  virtual void set_push_torque(const Eigen::Ref<const Eigen::VectorXd>& torque) { (void)torque; }
   /// The last tick's values of info().plots' series, all plots in order.
   virtual void plot_values(std::vector<double>& values) const = 0;
   /// The last tick's marker positions (world), in info().markers' order.

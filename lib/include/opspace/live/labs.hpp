@@ -3,6 +3,8 @@
 /// its gains. Each records its current run as the offline run's Result.
 #pragma once
 
+#include <functional>
+
 #include "opspace/live/loop_lab.hpp"
 #include "opspace/scenarios/p1b.hpp"
 #include "opspace/scenarios/p2.hpp"
@@ -11,12 +13,19 @@
 
 namespace opspace::live {
 
-/// Problem 1b: laws PART1, PART2, PART3; push the elbow: under PART3 the tip holds, under
-/// PART2 it wanders. Plots: tip error, q2 against q2_d.
+/// Problem 1b: laws PART1, PART2, PART3. Unpushed, PART3's tip holds while PART2's wanders; a
+/// push moves the tip under every law, by Jv A^-1 Je^T F / kpx at rest (live/p1b_offset.hpp).
+/// Plots: tip error beside that prediction, q2 against q2_d.
 class P1bLab final : public LoopLab<scenarios::p1b::Loop, scenarios::p1b::Result> {
  public:
   P1bLab(hw2::p1b::Part part, scenarios::p1b::Controller control);
   void set_law(int law) override;
+  void set_push_torque(const Eigen::Ref<const Eigen::VectorXd>& torque) override;
+  /// The page's ghost: path(part), the reference's tip path under `part` unpushed from t = 0,
+  /// one point every `step` s (apps/: reference_runs.hpp).
+  void set_reference(double step, const std::function<std::vector<Eigen::Vector3d>(hw2::p1b::Part)>& path);
+  /// e = Jv A^-1 Je^T F / kpx for the last push torque and kpx (m): zero without a push.
+  const Eigen::Vector3d& predicted_offset() const { return predicted_offset_; }
   void plot_values(std::vector<double>& values) const override;
   void marker_positions(std::vector<Eigen::Vector3d>& positions) const override;
   std::vector<std::string> csv_columns() const override { return scenarios::p1b::csv_columns(); }
@@ -27,6 +36,7 @@ class P1bLab final : public LoopLab<scenarios::p1b::Loop, scenarios::p1b::Result
   std::unique_ptr<scenarios::p1b::Loop> make_loop() const override;
   scenarios::p1b::Controller control_;
   Eigen::Vector3d x_d_;
+  Eigen::Vector3d predicted_offset_ = Eigen::Vector3d::Zero();
 };
 
 /// Problem 2: the iiwa tracks its trajectory; push the elbow while it tracks. Plots: position

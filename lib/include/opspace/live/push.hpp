@@ -43,12 +43,15 @@ class Pusher {
   PushForce force(const Spring& spring, const Eigen::Ref<const Eigen::VectorXd>& q,
                   const Eigen::Ref<const Eigen::VectorXd>& qdot, int body, const Eigen::Vector3d& local,
                   const Eigen::Vector3d& target);
+  /// The last force() as joint torques, Je^T F (Je: the picked point's linear Jacobian).
+  const Eigen::VectorXd& joint_torque() const { return joint_torque_; }
 
  private:
   const Model& model_;
   Data data_;
   Matrix6Xd J0_;
   Eigen::MatrixXd Jv_;
+  Eigen::VectorXd joint_torque_;
 };
 
 }  // namespace opspace::live

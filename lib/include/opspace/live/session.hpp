@@ -75,6 +75,7 @@ class Session {
   bool pushing_ = false;
   Command push_;
   PushForce push_force_;
+  Eigen::VectorXd push_torque_;  // Je^T F of push_force_, or zero
   std::vector<double> values_;  // scratch: plot values
   std::vector<std::vector<double>> samples_;  // plot samples since the last frame
   std::vector<Eigen::Vector3d> markers_;
