@@ -14,6 +14,7 @@
 
 #include "opspace/hw2/p1b.hpp"
 #include "opspace/live/labs.hpp"
+#include "opspace/live/run.hpp"
 #include "opspace/live/session.hpp"
 #include "support/count_allocations.hpp"
 
@@ -139,4 +140,20 @@ TEST_CASE("the page's prediction of a push's offset allocates nothing in the con
   const long n = allocations_in([&] { lab.set_push_torque(torque); });
   CHECK_MESSAGE(n == 0, "the prediction allocated ", n, " times");
   CHECK(lab.predicted_offset().norm() > 0.0);
+}
+
+// Seen to fail: with page() leaving the ghost out (run.cpp), "ghost":null after set_reference too.
+TEST_CASE("the page carries the reference's tip path of each law, in the law switch's order") {
+  live::P1bLab lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  CHECK_MESSAGE(live::page(lab, 50.0).find(R"("ghost":null)") != std::string::npos, "no reference given: no ghost");
+  // Two points (p, 0, 0), (p, 1, 0) for PART p: the page's law i must get PART i+1's path.
+  lab.set_reference(0.02, [](Part part) {
+    const double p = static_cast<int>(part);
+    return std::vector<Eigen::Vector3d>{{p, 0.0, 0.0}, {p, 1.0, 0.0}};
+  });
+  const std::string page = live::page(lab, 50.0);
+  CHECK_MESSAGE(page.find(R"("laws":["PART1: )") != std::string::npos, "law 0 is PART1, 1 PART2, 2 PART3");
+  CHECK_MESSAGE(page.find(R"("step":0.02,"paths":[[1.0,0.0,0.0,1.0,1.0,0.0],[2.0,0.0,0.0,2.0,1.0,0.0],)"
+                          R"([3.0,0.0,0.0,3.0,1.0,0.0]]})") != std::string::npos,
+                page.substr(page.find("\"ghost\""), 200));
 }
