@@ -1,7 +1,7 @@
 // The live page's ghost (docs/live.md, "The ghost"): a reference's tip path for the law in force,
 // unpushed from t = 0, drawn as a faint line, and a faint ball where that run's tip is at the
-// frame's time (hidden past the path's end). data.ghost: {label, color, step, paths: one
-// [x, y, z, ...] per law}.
+// frame's time (hidden past the path's end, which the legend then says). data.ghost: {label,
+// color, step, paths: one [x, y, z, ...] per law}.
 import * as THREE from 'three';
 import { api } from './common.js';
 
@@ -18,11 +18,14 @@ export function buildGhost(data, scene) {
     scene.add(line);
     return line;
   });
-  const ball = new THREE.Mesh(new THREE.SphereGeometry(0.016, 16, 10),
-    new THREE.MeshBasicMaterial({ color, transparent: true, opacity: 0.35, depthWrite: false }));
+  // Larger than the target's sphere (0.02 m): a halo around it when the reference holds its tip.
+  const ball = new THREE.Mesh(new THREE.SphereGeometry(0.024, 16, 10),
+    new THREE.MeshBasicMaterial({ color, transparent: true, opacity: 0.45, depthWrite: false }));
   ball.visible = false;
   scene.add(ball);
   api.ghost = { law: -1, visible: false, position: null };
+  // Past the reference's run (its last point), the legend says so: a reset compares from t = 0.
+  const when = document.getElementById('ghost-when');
 
   /// The path of law `law` at time t: linear between its points, null past its ends.
   function at(law, t) {
@@ -38,6 +41,8 @@ export function buildGhost(data, scene) {
       const p = at(frame.law, frame.t);
       ball.visible = p !== null;
       if (p) ball.position.set(p[0], p[1], p[2]);
+      const end = ((ghost.paths[frame.law] || []).length / 3 - 1) * ghost.step;
+      if (when) when.textContent = p || !(end > 0) ? '' : ` (its run ended at ${end.toFixed(0)} s: Reset to compare from t = 0)`;
       api.ghost = { law: frame.law, t: frame.t, visible: ball.visible, position: p };
     },
   };

@@ -63,7 +63,8 @@ export function buildPage(data) {
   }
   if (data.ghost) {
     const li = el('li', { id: 'ghost-key' });
-    li.append(el('span', { class: 'swatch', style: `background:${data.ghost.color};opacity:0.5` }), document.createTextNode(data.ghost.label));
+    li.append(el('span', { class: 'swatch', style: `background:${data.ghost.color};opacity:0.5` }), document.createTextNode(data.ghost.label),
+      el('span', { id: 'ghost-when' }));
     legend.append(li);
   }
   hud.append(legend);
