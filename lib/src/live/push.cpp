@@ -10,17 +10,25 @@
 namespace opspace::live {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
-double effective_mass(const Eigen::Ref<const Eigen::MatrixXd>& Jv, const Eigen::Ref<const Eigen::MatrixXd>& A) {
-  // trace(Jv A^-1 Jv^T) = sum of the squared entries of L^-1 Jv^T, with A = L L^T.
-  const Eigen::LLT<Eigen::MatrixXd> llt(A);
+constexpr double kPi = 3.14159265358979323846;
+
+// 3 / trace(Jv A^-1 Jv^T) with A = L L^T factored in `llt`: the trace is the squared norm of
+// Y = L^-1 Jv^T (Y: a workspace, no allocation once sized).
+double mass_from(const Eigen::LLT<Eigen::MatrixXd>& llt, const Eigen::Ref<const Eigen::MatrixXd>& Jv, Eigen::MatrixXd& Y) {
   if (llt.info() != Eigen::Success) throw std::invalid_argument("effective_mass: A is not positive definite");
-  const Eigen::MatrixXd Y = llt.matrixL().solve(Jv.transpose());
+  Y = Jv.transpose();
+  llt.matrixL().solveInPlace(Y);
   const double trace = Y.squaredNorm();
   // A point on the base (Jv = 0) cannot be moved: infinitely heavy, which the clamp bounds.
   return trace > 0.0 ? 3.0 / trace : INFINITY;
+}
+
+}  // namespace
+
+double effective_mass(const Eigen::Ref<const Eigen::MatrixXd>& Jv, const Eigen::Ref<const Eigen::MatrixXd>& A) {
+  Eigen::MatrixXd Y;
+  return mass_from(Eigen::LLT<Eigen::MatrixXd>(A), Jv, Y);
 }
 
 Eigen::Vector3d spring_force(const Spring& spring, double mass, const Eigen::Vector3d& x_p,
@@ -34,7 +42,7 @@ Eigen::Vector3d spring_force(const Spring& spring, double mass, const Eigen::Vec
 }
 
 Pusher::Pusher(const Model& model)
-    : model_(model), data_(model), J0_(6, model.dof()), Jv_(3, model.dof()),
+    : model_(model), data_(model), J0_(6, model.dof()), Jv_(3, model.dof()), llt_(model.dof()), Y_(model.dof(), 3),
       joint_torque_(Eigen::VectorXd::Zero(model.dof())) {}
 
 PushForce Pusher::force(const Spring& spring, const Eigen::Ref<const Eigen::VectorXd>& q,
@@ -50,7 +58,7 @@ PushForce Pusher::force(const Spring& spring, const Eigen::Ref<const Eigen::Vect
   Jv_ = J0_.topRows<3>();
   PushForce push;
   push.point = point_position(model_, data_, frame, local);
-  push.mass = effective_mass(Jv_, data_.A);
+  push.mass = mass_from(llt_.compute(data_.A), Jv_, Y_);
   push.force = spring_force(spring, push.mass, push.point, Jv_ * qdot, target);
   joint_torque_.noalias() = Jv_.transpose() * push.force;
   return push;

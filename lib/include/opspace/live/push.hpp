@@ -4,6 +4,7 @@
 /// as MuJoCo's viewer perturbs a body (mjv_applyPerturbForce), and clamped to a maximum force.
 #pragma once
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "opspace/algorithms/kinematics.hpp"
@@ -33,7 +34,8 @@ struct PushForce {
   double mass = 0.0;                                ///< the effective mass used (kg)
 };
 
-/// Computes a push's force at a state of a Model, with workspaces sized once.
+/// Computes a push's force at a state of a Model, with workspaces sized once: no allocation per
+/// step.
 class Pusher {
  public:
   /// Workspaces for `model`, which must outlive the Pusher.
@@ -51,6 +53,8 @@ class Pusher {
   Data data_;
   Matrix6Xd J0_;
   Eigen::MatrixXd Jv_;
+  Eigen::LLT<Eigen::MatrixXd> llt_;  // of A, for the effective mass
+  Eigen::MatrixXd Y_;                // L^-1 Jv^T
   Eigen::VectorXd joint_torque_;
 };
 
