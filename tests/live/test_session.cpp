@@ -203,7 +203,7 @@ TEST_CASE("a push on the elbow moves the tip far less under PART3 than under PAR
   MESSAGE("tip deviation from the push: PART2 " << part2.deviation * 1e3 << " mm, PART3 " << part3.deviation * 1e3
           << " mm; PART3's steady offset |Jv A^-1 Je^T F| / kpx = " << part3.steady * 1e3 << " mm");
   // PART3: the push reaches the tip only as the task-space force Jbar^T Je^T F, which the tip's
-  // PD rejects in the decoupled task dynamics e'' + kvx e' + kpx e = Jv A^-1 Je^T F: an
+  // PD resists in the decoupled task dynamics e'' + kvx e' + kpx e = Jv A^-1 Je^T F: an
   // overdamped response (kvx = 20 > 2 sqrt(kpx) = 14.1) to a pulse never exceeds the step's
   // steady offset |Jv A^-1 Je^T F| / kpx; 1.5 x leaves room for the pose's change under the push.
   CHECK(part3.deviation <= 1.5 * part3.steady);

@@ -241,7 +241,8 @@ try {
     const labelText = (await label.isVisible()) ? await label.textContent() : '(hidden)';
     check(force > 1 && /^\d+\.\d N$/.test(labelText), `the spring pulls with ${force.toFixed(1)} N, labelled '${labelText}'`);
     check(pulled.push && pulled.push.body === BODY && pulled.push.target.every(Number.isFinite), 'the frames show the pulled point and the mouse point');
-    // The tip error plot's keys: the measured offset beside the one predicted for this push.
+    // The tip error plot's keys: the measured offset beside the one predicted for this push, both
+    // above the millimetre PART3 holds unpushed (tests/live measures the prediction's accuracy).
     const shown = async () => Promise.all(['#value-0-0', '#value-0-1'].map(async (id) => Number(await page.locator(id).textContent())));
     const [measured, predicted] = await shown();
     check(measured > 1 && predicted > 1 && pulled.push !== null,
