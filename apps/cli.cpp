@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <sstream>
 #include <filesystem>
 
+#include <opspace/scenarios/graded.hpp>
 #include <opspace/scenarios/watchdog.hpp>
 #include <opspace/visuals/visuals.hpp>
 
@@ -46,6 +48,15 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
       options.duration_given = true;
     } else if (arg == "--live") {
       options.live = true;
+    } else if (arg == "--test" && has_value) {
+      options.test = argv[++i];
+      if (options.test.empty()) return bad(argv[0], "--test needs the name of a graded test, as the report prints it");
+    } else if (arg == "--seed" && has_value) {
+      const std::string value = argv[++i];
+      char* end = nullptr;
+      options.seed = std::strtoull(value.c_str(), &end, 10);
+      if (value.empty() || *end != '\0' || value[0] == '-' || options.seed == 0)
+        return bad(argv[0], "--seed needs a positive whole number, not '" + value + "'");
     } else if (arg == "--port" && has_value) {
       const std::string value = argv[++i];
       char* end = nullptr;
@@ -57,7 +68,9 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
     } else if (program.csv && arg == "--csv" && has_value) {
       options.run.csv_path = argv[++i];
       if (options.run.csv_path.empty()) return bad(argv[0], "--csv needs a file path, not ''");
-    } else if ((arg == "--duration" || arg == "--port" || (program.csv && arg == "--csv")) && !has_value) {
+    } else if ((arg == "--duration" || arg == "--port" || arg == "--test" || arg == "--seed" ||
+                (program.csv && arg == "--csv")) &&
+               !has_value) {
       return bad(argv[0], arg + " needs a value after it");
     } else if (!program.extra || !program.extra(arg)) {
       std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
@@ -65,6 +78,8 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
     }
   }
   if (options.port != 0 && !options.live) return bad(argv[0], "'--port' applies to --live only (add --live)");
+  if (!options.test.empty() && options.duration_given)
+    return bad(argv[0], "--duration does not apply with --test: a replay lasts as long as the graded run");
   return -1;
 }
 
@@ -182,6 +197,22 @@ bool watchdog_from_environment(const char* program, Options& options) {
     std::cerr << program << ": " << e.what() << "\n";
     return false;
   }
+}
+
+void start_replay(Options& options, const std::string& problem) {
+  if (options.test.empty()) return;
+  options.run.duration = opspace::scenarios::graded_duration(problem);
+  std::cout << "replaying the graded test \"" << options.test << "\" of problem " << problem << ": its scenario, "
+            << options.run.duration << " s as the grader ran it";
+  if (options.seed != 0) std::cout << " (seed " << options.seed << ": the simulated scenarios draw no random input)";
+  std::cout << "\n";
+}
+
+void print_final(const Options& options, const std::string& quantity, double value, const std::string& unit) {
+  if (options.test.empty()) return;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  std::cout << "final " << quantity << ": " << text << " " << unit << "\n";
 }
 
 int no_live(const char* program) {

@@ -34,6 +34,10 @@ struct Options {
   bool live = false;                   ///< --live: served live in the browser (docs/live.md)
   int port = 0;                        ///< --port N: the live page's port (0: a free one)
   bool duration_given = false;         ///< --duration was on the command line
+  /// --test NAME: replay the graded test NAME's run, as the grader ran it (the report's
+  /// "replay it" line): its duration, and its final values printed in full.
+  std::string test;
+  unsigned long long seed = 0;  ///< --seed N: the grading's seed, which the report names
 };
 
 /// The program's side of parse(): its usage text and the options only it takes.
@@ -48,7 +52,8 @@ struct Program {
 
 /// Parses argv[first] .. argv[argc - 1] into `options`: --help, -h, --duration SECONDS (in
 /// (0, kMaxDuration]), --csv PATH (not empty), --no-plots, --no-replay, --live, --port N (0 to
-/// 65535, with --live only), then program.extra.
+/// 65535, with --live only), --test NAME (not with --duration), --seed N (a positive whole
+/// number), then program.extra.
 /// Returns -1 when the program goes on, otherwise its exit code: 0 after --help, 2 after a bad
 /// argument (a message naming it on stderr).
 int parse(int argc, char** argv, int first, const Program& program, Options& options);
@@ -122,6 +127,15 @@ int finish(const Options& options, const std::string& prefix, const Result& resu
   publish(options, prefix, figures, scene);
   return result.failure.empty() ? 0 : 1;
 }
+
+/// With --test: sets the run's duration to the graded run's of `problem` (scenarios/graded.hpp)
+/// and prints which test the run replays. The simulated scenarios draw no random input, so the
+/// seed names the grading and changes nothing in the run.
+void start_replay(Options& options, const std::string& problem);
+
+/// With --test: "final QUANTITY: VALUE UNIT", VALUE in full (17 digits): the last value of the
+/// report's figure of QUANTITY, which a replay reproduces.
+void print_final(const Options& options, const std::string& quantity, double value, const std::string& unit);
 
 /// Prints on stderr that this build has no live lab and how to get it; returns 2.
 int no_live(const char* program);

@@ -8,6 +8,7 @@
 
 #include <opspace/hw2/p1b.hpp>
 #include <opspace/scenarios.hpp>
+#include <opspace/scenarios/graded.hpp>
 #include <opspace/visuals/p1b.hpp>
 #include <opspace/visuals/visuals.hpp>
 
@@ -26,7 +27,7 @@ using opspace::hw2::p1b::Part;
 int usage(const char* program, int code) {
   (code ? std::cerr : std::cout)
       << "usage: " << program << " 1|2|3|compare [--no-joint-damping] [--duration SECONDS] [--csv PATH]\n"
-      << "       [--no-plots] [--no-replay] [--live [--port N]]\n"
+      << "       [--no-plots] [--no-replay] [--live [--port N]] [--test NAME [--seed N]]\n"
       << "  1  PART1: hold the tip with PD control and joint damping\n"
       << "     (--no-joint-damping: question ii's variant without it)\n"
       << "  2  PART2: move joint 2 in the null space, pseudo-inverse projector\n"
@@ -38,7 +39,9 @@ int usage(const char* program, int code) {
       << "              are written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n"
       << "  --live      run in real time in the browser: push the arm, switch PART (docs/live.md); until\n"
-      << "              Ctrl-C, or --duration simulated seconds. --port N: its port (default: a free one)\n";
+      << "              Ctrl-C, or --duration simulated seconds. --port N: its port (default: a free one)\n"
+      << "  --test      replay a graded test's run (the grader's report prints the command): its\n"
+      << "              duration, and the final values its figure ends with; --seed: the grading's\n";
   return code;
 }
 
@@ -85,6 +88,16 @@ void print_summary(Part part, const p1b::Result& r, double duration, const std::
   cli::print_summary_end(r, csv);
 }
 
+/// With --test: the final values of the series the graded tests read of `part`'s run, named as
+/// the report's figures name them (tests/graded/p1b.cpp).
+void print_finals(const cli::Options& options, Part part, const p1b::Result& r) {
+  if (r.samples.empty()) return;
+  const std::string name = part == Part::kTipPd ? "PART1" : part == Part::kPseudoInverseNullspace ? "PART2" : "PART3";
+  cli::print_final(options, name + " tip error |x - x_d|", p1b::tip_error(r.samples.back()), "m");
+  if (part != Part::kTipPd && part != Part::kTipPdWithoutJointDamping)
+    cli::print_final(options, name + " joint 2 tracking error |q2 - q2_d|", p1b::q2_error(r.samples.back()), "rad");
+}
+
 /// Runs PART2 and PART3 and draws their tip drift in one figure: the lesson of problem 1b.
 int compare(const cli::Options& cli_options, const std::string& prefix) {
   std::cout << "problem 1b, PART2 against PART3 (" << OPSPACE_GRADED_LIBRARY << ")\n";
@@ -112,6 +125,8 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
   table.note("PART2 is chaotic: round-off alone moves its numbers by tens of percent.");
   table.print(std::cout, "bash scripts/grade --problem 1b says which test and why");
   std::cout << "logs: " << prefix << "-part2.csv " << prefix << "-part3.csv\n";
+  print_finals(cli_options, Part::kPseudoInverseNullspace, part2);
+  print_finals(cli_options, Part::kDynamicallyConsistentNullspace, part3);
   if (cli_options.plots) opspace::visuals::publish({p1b::compare_figure(part2, part3)}, nullptr, prefix, std::cout);
   if (!part2.failure.empty()) std::cout << "PART2 stopped early: " << part2.failure << "\n";
   if (!part3.failure.empty()) std::cout << "PART3 stopped early: " << part3.failure << "\n";
@@ -139,6 +154,7 @@ int main(int argc, char** argv) {
   const Part part = command.part;
   cli::Options& options = command.options;
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
+  cli::start_replay(options, "1b");
   options.run.progress = &std::cerr;
   const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);
   if (command.comparing) return cli::guarded(argv[0], [&] { return compare(options, prefix); });
@@ -153,6 +169,7 @@ int main(int argc, char** argv) {
   return cli::guarded(argv[0], [&] {
     const p1b::Result result = p1b::run(part, &opspace::hw2::p1b::control, options.run);
     print_summary(part, result, options.run.duration, options.run.csv_path);
+    print_finals(options, part, result);
     return cli::finish(
         options, prefix, result, [&] { return p1b::figures(result, part); },
         [&] { return p1b::replay_scene(result, part); });

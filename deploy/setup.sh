@@ -67,7 +67,7 @@ cd "$REPO"
 cmake --preset release -DOPSPACE_BUILD_BENCH=OFF -DOPSPACE_BUILD_REPLAY=OFF -DOPSPACE_BUILD_LIVE=OFF > "$ROOT/setup-configure.log" ||
   { cat "$ROOT/setup-configure.log"; fail "cmake could not configure the build"; }
 say "building the grader (log: $ROOT/setup-build.log)"
-cmake --build "$BUILD" --parallel "$jobs" --target hw2-grade hw2-grade-sol test_graded_suite deny_namespaces > "$ROOT/setup-build.log" 2>&1 ||
+cmake --build "$BUILD" --parallel "$jobs" --target hw2-grade hw2-grade-sol test_graded_suite deny_namespaces hw2-p1-part3-pinv > "$ROOT/setup-build.log" 2>&1 ||
   { tail -40 "$ROOT/setup-build.log"; fail "the build failed"; }
 
 # --- 3. the runner's account -----------------------------------------------------------------

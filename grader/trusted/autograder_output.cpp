@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "grader.hpp"
+#include "report_html.hpp"
 #include "student_text.hpp"
 
 namespace opspace::grading {
@@ -43,12 +44,27 @@ std::string xml_text(const std::string& text) {
   return out;
 }
 
-std::string feedback(const TestResult& r) {
+// The findings and hint; for a failed simulated test with `seed`, its runs as text tables
+// (results.json shows text alone: docs/grader.md) and the command that replays it.
+std::string feedback(const TestResult& r, std::uint64_t seed = 0) {
   std::string text;
   for (const std::string& f : r.findings) text += "- " + f + "\n";
-  if (r.score < r.test->points && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";
+  const bool failed = r.score < r.test->points;
+  if (failed && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";
+  if (failed && seed != 0) {
+    for (const RunFigure& f : r.figures) text += run_table(f);
+    const std::string replay = replay_command(*r.test, seed);
+    if (!replay.empty()) text += "replay it on your machine: " + replay + "\n";
+  }
   if (!r.printed.empty()) text += "your code printed:\n" + quote_block(r.printed, "");
   return text;
+}
+
+// Gradescope's tags of a test: the known mistake named for it, if any.
+Json tags(const TestResult& r) {
+  Json out = Json::array();
+  if (!r.mistake.empty()) out.push_back(html_escape("mistake: " + r.mistake));
+  return out;
 }
 
 // The grader's own failures begin so (runner_process.cpp, runner_build.cpp, grader.cpp): a
@@ -117,8 +133,9 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
                            {"score", number(r.score)},
                            {"max_score", number(r.test->points)},
                            {"status", r.score >= r.test->points ? "passed" : "failed"},
-                           {"output", html_escape(feedback(r))},
+                           {"output", html_escape(feedback(r, settings.seed))},
                            {"output_format", "text"},
+                           {"tags", tags(r)},
                            {"visibility", is_hidden(p, r, settings.hidden) ? settings.hidden_as : "visible"}});
     }
   }

@@ -18,7 +18,9 @@
 #include "cpu_share.hpp"
 #include "interrupt.hpp"
 #include "mistakes.hpp"
+#include "reference_runs.hpp"
 #include "remote_api.hpp"
+#include "report_html.hpp"
 #include "runner_build.hpp"
 #include "runner_process.hpp"
 #include "sandbox.hpp"
@@ -72,6 +74,16 @@ bool write_file(const std::string& path, const char* what, Writer writer) {
 }
 
 std::string file_of(const std::string& key) { return "p" + key + ".cpp"; }
+
+// `path` relative to the current folder when it lies below it ("out/grade/report.html").
+std::string shown_path(const std::string& path) {
+  std::error_code ec;
+  const fs::path full = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  const fs::path here = fs::weakly_canonical(fs::current_path(ec), ec);
+  if (ec) return path;
+  const auto [f, h] = std::mismatch(full.begin(), full.end(), here.begin(), here.end());
+  return h == here.end() ? full.lexically_relative(here).string() : full.string();
+}
 
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -257,6 +269,8 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     std::cerr << "hw2-grade: " << e.what() << "\n";
     return 1;
   }
+  // The reference's runs of the figures, kept for every later grading by this grader.
+  set_reference_store(std::string(OPSPACE_GRADING_CACHE) + "/reference-" + toolchain.fingerprint);
   if (!unprotected.empty())
     std::cout << "UNPROTECTED: " << unprotected << ": the code graded ran with this grader's rights\n";
   std::cout << "opspace grader: problem set 2, " << options.exercises << " (seed " << options.seed << ")\n"
@@ -301,7 +315,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   run_folder.reset();
   kill_account(account);
   const double grading_seconds = since(grading_start), seconds = since(start);
-  print_report(std::cout, results, options.hidden);
+  print_report(std::cout, results, options.hidden, options.seed);
   std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,
               grading_seconds, static_cast<unsigned long long>(options.seed),
               static_cast<unsigned long long>(options.seed));
@@ -322,6 +336,15 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   if (!options.junit_path.empty()) {
     written &= write_file(options.junit_path, "JUnit XML", [&](std::ostream& out) { write_junit(out, results, seconds); });
+  }
+  if (!options.html_path.empty()) {
+    std::error_code ec;  // a folder that cannot be made: write_file says the page cannot be written
+    fs::create_directories(fs::path(options.html_path).parent_path(), ec);
+    const bool page = write_file(options.html_path, "the report's page", [&](std::ostream& out) {
+      write_html_report(out, results, options.hidden, options.seed);
+    });
+    if (page) std::cout << "open " << shown_path(options.html_path) << "\n";
+    written &= page;
   }
   return written ? 0 : 1;
 }

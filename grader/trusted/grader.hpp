@@ -23,6 +23,7 @@ struct GraderOptions {
   std::map<std::string, double> problem_timeout;  ///< a problem's own limit (--timeout KEY=SECONDS)
   std::string gradescope_path;      ///< results.json, if not empty
   std::string junit_path;           ///< JUnit XML, if not empty
+  std::string html_path;            ///< the report as a page (report_html.hpp), if not empty
   std::vector<std::string> hidden;  ///< tests whose name contains one of these are hidden
   std::string hidden_as = "after_published";  ///< their visibility in results.json (--hidden-visibility)
   bool isolate = true;              ///< the sandbox (false: debugging only)

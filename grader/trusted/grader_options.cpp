@@ -41,8 +41,8 @@ bool parse_timeout(const std::string& text, GraderOptions& options, const char* 
 
 int grader_usage(std::ostream& out, const char* program, double default_timeout, int code) {
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
-      << "          [--gradescope FILE] [--junit FILE] [--hidden TEXT]... [--sandbox-user NAME] [--unprotected]\n"
-      << "          [--hidden-visibility WHEN] [--no-isolation]\n"
+      << "          [--gradescope FILE] [--junit FILE] [--html FILE] [--hidden TEXT]... [--sandbox-user NAME]\n"
+      << "          [--unprotected] [--hidden-visibility WHEN] [--no-isolation]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
   for (const Problem& p : graded_suite()) {
@@ -56,6 +56,8 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "  --seed         replay the random inputs of an earlier run (its report prints the seed)\n"
       << "  --gradescope   also write Gradescope's results.json to FILE\n"
       << "  --junit        also write JUnit XML to FILE\n"
+      << "  --html         also write the report as a page to FILE, with each simulated test's run\n"
+      << "                 plotted (scripts/grade: out/grade/report.html)\n"
       << "  --hidden       hide from the student the tests whose name contains TEXT (repeatable):\n"
       << "                 the report and results.json's lines count the others; the score, the\n"
       << "                 gradebook's, counts all\n"
@@ -109,6 +111,8 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
       options.gradescope_path = argv[++i];
     } else if (arg == "--junit" && has_value) {
       options.junit_path = argv[++i];
+    } else if (arg == "--html" && has_value) {
+      options.html_path = argv[++i];
     } else if (arg == "--hidden" && has_value) {
       options.hidden.push_back(argv[++i]);
     } else if (arg == "--hidden-visibility" && has_value) {

@@ -8,6 +8,7 @@
 
 #include "diagnosis.hpp"
 #include "mistakes.hpp"
+#include "reference_runs.hpp"
 #include "runner_process.hpp"
 #include "student_text.hpp"
 
@@ -49,6 +50,7 @@ bool Check::near(const std::string& what, const Eigen::Ref<const Eigen::MatrixXd
     const double scale = std::max(1.0, expected.cwiseAbs().maxCoeff());
     ok = (computed - expected).cwiseAbs().maxCoeff() <= tol * scale;
   }
+  if (!ok && same_shape && expected.size() > 1 && table_.what.empty()) table_ = {what, expected, computed, tol};
   if (!ok) {
     fail(what + ": expected " + format(expected) + ", computed " + format(computed) +
          (meaning.empty() ? "" : ". " + meaning));
@@ -121,6 +123,8 @@ TestResult run_test(const GradedTest& test, const Hw2Api& api) {
     test.body(api, check);
     result.score = check.fraction() * test.points;
     result.findings = check.findings();
+    result.figures = check.figures();
+    result.table = check.table();
   } catch (const StudentException& e) {
     result.findings = {e.what()};
   } catch (const RunnerFailure& e) {
@@ -149,8 +153,16 @@ void carry_diagnoses(const std::vector<Mistake>& catalogue, std::vector<TestResu
       if (!aimed || r.diagnosed || r.interrupted || r.score >= r.test->points) continue;
       r.findings.push_back("likely the same mistake as above: " + mistake.what);
       r.diagnosed = true;
+      r.mistake = mistake.what;
     }
   }
+}
+
+// The mistake of `catalogue` that diagnose() named in `likely` ("likely mistake: WHAT. ...").
+std::string named_mistake(const std::vector<Mistake>& catalogue, const std::string& likely) {
+  for (const Mistake& mistake : catalogue)
+    if (likely.rfind("likely mistake: " + mistake.what + ".", 0) == 0) return mistake.what;
+  return "";
 }
 
 }  // namespace
@@ -193,8 +205,11 @@ std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw
       if (!likely.empty()) {
         result.findings.push_back(likely);
         result.diagnosed = true;
+        result.mistake = named_mistake(*catalogue, likely);
       }
     }
+    // After the runner's part of the test: the reference's runs are the grader's own work.
+    attach_references(result.figures, result.score < test.points);
     results.push_back(std::move(result));
   }
   if (catalogue) carry_diagnoses(*catalogue, results);

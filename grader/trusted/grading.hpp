@@ -6,12 +6,44 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "api.hpp"
 
 namespace opspace::grading {
+
+/// A time series of a run, decimated for a plot (run_figure.hpp): times (s) and values (SI).
+struct Series {
+  std::vector<double> t;
+  std::vector<double> v;
+};
+
+/// What a simulated test judged, for the report's plot: the student's run and the reference's
+/// (the grader's oracle law at the same inputs), and the bound the check applied.
+struct RunFigure {
+  std::string quantity;     ///< what is plotted, e.g. "tip error |x - x_d|"
+  std::string unit;         ///< its unit as shown, e.g. "mm"
+  double unit_scale = 1.0;  ///< SI value times this: the value shown
+  /// The check's bound on the plotted quantity (SI); NaN: no line drawn.
+  double bound = std::numeric_limits<double>::quiet_NaN();
+  bool upper = true;        ///< the bound is a maximum (at_most), else a minimum (at_least)
+  std::string judged;       ///< what the check reads of the series, e.g. "its largest value after 2 s"
+  double judged_from = 0.0;  ///< the check reads the series from this time on (s)
+  Series student;           ///< the run of the code graded
+  Series reference;         ///< the run of the problem set's law, same scenario (reference_runs.hpp)
+  std::string reference_key;              ///< names the reference's series among all runs'
+  std::function<Series()> make_reference;  ///< runs the law for it, when it is not known yet
+};
+
+/// A failed comparison of a matrix or a vector, entry by entry: for the report's table.
+struct EntryTable {
+  std::string what;          ///< the check's name of the value
+  Eigen::MatrixXd expected;  ///< the oracle's value
+  Eigen::MatrixXd computed;  ///< the student's (same shape, else no table is kept)
+  double tol = 0.0;          ///< an entry is wrong beyond tol * max(1, max |expected|)
+};
 
 /// Collects the findings of one graded test. A test earns fraction() of its points.
 class Check {
@@ -37,14 +69,22 @@ class Check {
                 double unit_scale = 1.0, const std::string& unit = "");
   /// Caps the test's credit at `fraction` (partial credit for a measured quantity).
   void credit_at_most(double fraction, const std::string& message);
+  /// Keeps a run's figure for the report. Never changes the credit.
+  void figure(RunFigure figure) { figures_.push_back(std::move(figure)); }
 
   double fraction() const { return fraction_; }  ///< share of the points earned, 0 to 1
   const std::vector<std::string>& findings() const { return findings_; }  ///< what failed, in order
+  const std::vector<RunFigure>& figures() const { return figures_; }  ///< the runs the test judged
+  /// The first failed near() of a matrix or vector of matching shape, entry by entry (empty
+  /// `what` if none).
+  const EntryTable& table() const { return table_; }
 
  private:
   void fail(const std::string& message);
   double fraction_ = 1.0;
   std::vector<std::string> findings_;
+  std::vector<RunFigure> figures_;
+  EntryTable table_;
 };
 
 /// One graded test of a problem.
@@ -53,6 +93,9 @@ struct GradedTest {
   double points = 0.0;  ///< what a passing implementation earns
   std::string hint;     ///< how to think about a failure
   std::function<void(const Hw2Api&, Check&)> body;  ///< runs the checks on the functions of the api
+  /// A simulated test: the program and arguments that run its scenario ("hw2-p1 3"), to which
+  /// the report adds --test and --seed. Empty for a test of formulas.
+  std::string replay = {};
 };
 
 /// What one graded test earned.
@@ -66,6 +109,9 @@ struct TestResult {
   /// A known mistake was named for this test: the likely-mistake line replaces the hint.
   bool diagnosed = false;
   std::string printed;  ///< what the student's code printed during the test (sanitized, cut)
+  std::vector<RunFigure> figures;  ///< the runs a simulated test judged (Check::figure)
+  EntryTable table;                ///< the first wrong matrix or vector, entry by entry
+  std::string mistake;             ///< the known mistake named for this test (catalogue), if any
 };
 
 class RunnerProcess;

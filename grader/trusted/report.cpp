@@ -33,12 +33,29 @@ std::string hidden_note(int tests, double points) {
          " points not shown: they count in the grade your instructor publishes";
 }
 
+// `text` between double quotes for bash: \ " $ ` escaped.
+std::string bash_quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '\\' || c == '"' || c == '$' || c == '`') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
 std::string status(const TestResult& r) {
   if (r.score >= r.test->points) return "PASS";
   return r.score > 0.0 ? "PART" : "FAIL";
 }
 
-}  // namespace
+std::string replay_command(const GradedTest& test, std::uint64_t seed) {
+  if (test.replay.empty()) return "";
+  std::string command = "bash scripts/run " + test.replay + " --test " + bash_quoted(test.name);
+  if (seed != 0) command += " --seed " + std::to_string(seed);
+  return command;
+}
 
 ProblemResult grade(const Problem& problem, const Hw2Api& api) {
   ProblemResult out;
@@ -73,7 +90,8 @@ ShownScore shown_score(const ProblemResult& problem, const std::vector<std::stri
   return out;
 }
 
-void print_report(std::ostream& out, const std::vector<ProblemResult>& problems, const std::vector<std::string>& hidden) {
+void print_report(std::ostream& out, const std::vector<ProblemResult>& problems, const std::vector<std::string>& hidden,
+                  std::uint64_t seed) {
   double total = 0.0, total_max = 0.0, hidden_points = 0.0;
   int hidden_tests = 0;
   for (const ProblemResult& p : problems) {
@@ -87,6 +105,8 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
       if (r.score < r.test->points) {
         for (const std::string& finding : r.findings) out << "          - " << finding << "\n";
         if (!r.interrupted && !r.diagnosed) out << "          hint: " << r.test->hint << "\n";
+        const std::string replay = replay_command(*r.test, seed);
+        if (!replay.empty()) out << "          replay it: " << replay << "\n";
       }
       if (!r.printed.empty()) out << "          your code printed:\n" << quoted(r.printed);
     }

@@ -2,6 +2,7 @@
 /// Grading a problem and printing the score table a student reads.
 #pragma once
 
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -41,11 +42,20 @@ struct ShownScore {
 };
 ShownScore shown_score(const ProblemResult& problem, const std::vector<std::string>& hidden);
 
-/// Prints one block per problem (each test's status, points, findings and hint), the score
-/// per problem and the total. The tests of `hidden` are left out, and every score counts the
-/// shown tests alone: the printed report is the student's (scripts/regrade's report.txt);
-/// the whole grade is in results.json and the gradebook.
+/// "PASS", "PART" (some credit) or "FAIL".
+std::string status(const TestResult& r);
+
+/// The command that runs simulated test `test`'s scenario in its program, as the grader ran it
+/// ("bash scripts/run hw2-p1 3 --test \"...\" --seed 42"; no --seed when `seed` is 0); empty
+/// for a test of formulas.
+std::string replay_command(const GradedTest& test, std::uint64_t seed);
+
+/// Prints one block per problem (each test's status, points, findings and hint, and for a failed
+/// simulated test the command that replays it with `seed`), the score per problem and the
+/// total. The tests of `hidden` are left out, and every score counts the shown tests alone: the
+/// printed report is the student's (scripts/regrade's report.txt); the whole grade is in
+/// results.json and the gradebook.
 void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
-                  const std::vector<std::string>& hidden = {});
+                  const std::vector<std::string>& hidden = {}, std::uint64_t seed = 0);
 
 }  // namespace opspace::grading

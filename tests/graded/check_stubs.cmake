@@ -30,11 +30,42 @@ if(NOT actual STREQUAL expected)
   return()
 endif()
 
-execute_process(COMMAND "${GRADER}" OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+# With WORK: also results.json and the report's page (issue 41), every simulated test failed
+# with its figure: results.json valid, under 1 MB and escaped (check_results_page.cmake), and
+# the page holding a figure for each failed simulated test.
+set(outputs "")
+if(WORK)
+  file(REMOVE_RECURSE "${WORK}")
+  file(MAKE_DIRECTORY "${WORK}")
+  set(outputs --gradescope "${WORK}/results.json" --html "${WORK}/report.html")
+endif()
+execute_process(COMMAND "${GRADER}" ${outputs} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the grader exited with ${rc}:\n${out}\n${err}")
 endif()
 if(NOT out MATCHES "\nTotal: 0 / [0-9.]+ points")
   message(FATAL_ERROR "the untouched stubs earned points; a test that a stub passes cannot fail:\n${out}")
+endif()
+if(WORK)
+  execute_process(COMMAND ${CMAKE_COMMAND} -DJSON=${WORK}/results.json -P ${CMAKE_CURRENT_LIST_DIR}/check_results_page.cmake
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "the stubs' results.json")
+  endif()
+  file(READ "${WORK}/report.html" page)
+  # Each section of a failed simulated test, and those of them holding a figure: as many. The
+  # page's lines joined, each section then starts a line of its own (and no ; splits a match
+  # into two items of a CMake list).
+  string(REPLACE ";" "," page "${page}")
+  string(REPLACE "\n" " " page "${page}")
+  string(REPLACE "<section " "\n" page "${page}")
+  string(REGEX MATCHALL "\nclass=\"test fail\"[^\n>]*data-simulated=\"1\">" failed "${page}")
+  string(REGEX MATCHALL "\nclass=\"test fail\"[^\n>]*data-simulated=\"1\">[^\n]*<figure class=\"run\"" shown "${page}")
+  list(LENGTH failed failed_count)
+  list(LENGTH shown shown_count)
+  if(failed_count EQUAL 0 OR NOT shown_count EQUAL failed_count)
+    message(FATAL_ERROR "the stubs' page: ${failed_count} failed simulated tests, ${shown_count} of them with a figure")
+  endif()
+  message("ok   the stubs' page: each of the ${failed_count} failed simulated tests has its figure")
 endif()
 message("the untouched stubs score 0")

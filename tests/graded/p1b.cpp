@@ -6,14 +6,18 @@
 //   compared with the law's oracle at the same State (law_pin.hpp).
 #include <opspace/algorithms/linalg.hpp>
 #include <opspace/scenarios.hpp>
+#include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <memory>
 
 #include "law_pin.hpp"
 #include "oracles.hpp"
+#include "run_figure.hpp"
 #include "suite.hpp"
 #include "support/random.hpp"
 
@@ -31,8 +35,6 @@ using hw2::p1b::Matrix6d;
 // conditioned states) and rejects every wrong term, which changes tau at order 1.
 constexpr double kLawTol = 1e-6;
 constexpr int kStates = 8;
-// The simulated runs: one period of q_d(t) (10 s).
-constexpr double kRunSeconds = p1b::kDefaultDuration;
 
 const Model& puma() {
   static const Model model = load_urdf(robot_path(p1b::kRobotFile));
@@ -107,7 +109,7 @@ const Run& run(const Hw2Api& api, Part part) {
   auto it = cache.find(key);
   if (it == cache.end()) {
     scenarios::RunOptions options;
-    options.duration = kRunSeconds;
+    options.duration = scenarios::graded_duration("1b");  // as hw2-p1 --test replays it
     Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
     const auto pinned = [control = api.p1b.control, &pin = made.pin](Part p, const hw2::p1b::State& s,
                                                                      const hw2::p1b::Goal& goal) {
@@ -119,6 +121,44 @@ const Run& run(const Hw2Api& api, Part part) {
     it = cache.emplace(key, std::move(made)).first;
   }
   return it->second;
+}
+
+// The reference's run of `part`: the problem set's law (the oracles) in the same scenario.
+const p1b::Result& reference_run(Part part) {
+  static const Hw2Api oracles = oracle::reference_api();
+  return run(oracles, part).result;
+}
+
+// The series the checks read (scenarios/graded.hpp, which the programs' --test replay shares).
+using p1b::q2_error;
+using p1b::tip_error;
+
+const char* part_name(Part part) {
+  return part == Part::kTipPd ? "PART1" : part == Part::kPseudoInverseNullspace ? "PART2" : "PART3";
+}
+
+// The figure of the tip error of `part` in the student's run `mine`; bound NaN: none drawn.
+RunFigure tip_figure(Part part, const p1b::Result& mine, double bound, const std::string& judged) {
+  RunFigure f;
+  f.quantity = std::string(part_name(part)) + " tip error |x - x_d|";
+  f.unit = "mm";
+  f.unit_scale = 1e3;
+  f.bound = bound;
+  f.judged = judged;
+  f.judged_from = p1b::kSettleTime;
+  return run_figure(f, mine.samples, tip_error, std::string("1b ") + part_name(part) + " tip error",
+                    [part] { return decimate(reference_run(part).samples, tip_error); });
+}
+
+RunFigure q2_figure(Part part, const p1b::Result& mine, double bound) {
+  RunFigure f;
+  f.quantity = std::string(part_name(part)) + " joint 2 tracking error |q2 - q2_d|";
+  f.unit = "rad";
+  f.bound = bound;
+  f.judged = "its largest value after 2 s";
+  f.judged_from = p1b::kSettleTime;
+  return run_figure(f, mine.samples, q2_error, std::string("1b ") + part_name(part) + " q2 error",
+                    [part] { return decimate(reference_run(part).samples, q2_error); });
 }
 
 // The run went to its end and applied the problem set's law of `part` at every tick.
@@ -139,6 +179,7 @@ bool ran_the_law(const Run& r, Part part, Check& check) {
 }
 
 void part1_holds_the_tip(const Hw2Api& api, Check& check) {
+  check.figure(tip_figure(Part::kTipPd, run(api, Part::kTipPd).result, p1b::kPart1TipErrorRmsMax, "its RMS after 2 s"));
   if (!ran_the_law(run(api, Part::kTipPd), Part::kTipPd, check)) return;
   const p1b::Result& r = run(api, Part::kTipPd).result;
   // The tip starts 2.3 mm from x_d. A tip PD with p holds it to the mm scale; without p
@@ -149,6 +190,8 @@ void part1_holds_the_tip(const Hw2Api& api, Check& check) {
 
 void part3_holds_the_tip_while_q2_moves(const Hw2Api& api, Check& check) {
   const Part part3 = Part::kDynamicallyConsistentNullspace;
+  check.figure(tip_figure(part3, run(api, part3).result, p1b::kPart3TipErrorMax, "its largest value after 2 s"));
+  check.figure(q2_figure(part3, run(api, part3).result, p1b::kPart3Q2ErrorMax));
   if (!ran_the_law(run(api, part3), part3, check)) return;
   const p1b::Result& r = run(api, part3).result;
   // Dynamically consistent: null-space torques cause no tip acceleration, so the tip error
@@ -166,6 +209,10 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
   // Both runs must apply their parts' laws: a drift staged by another law (PART3's aimed off
   // x_d, say) is not the pseudo-inverse projector's lesson.
   const Part part2 = Part::kPseudoInverseNullspace, part3 = Part::kDynamicallyConsistentNullspace;
+  // The ratio has no bound of its own on either series: PART2's drift is drawn without a line.
+  check.figure(tip_figure(part2, run(api, part2).result, std::numeric_limits<double>::quiet_NaN(),
+                          "its RMS after 2 s, at least 10 times PART3's"));
+  check.figure(q2_figure(part2, run(api, part2).result, p1b::kPart2Q2ErrorMax));
   if (!ran_the_law(run(api, part2), part2, check) || !ran_the_law(run(api, part3), part3, check)) return;
   const p1b::Result& r2 = run(api, part2).result;
   const p1b::Result& r3 = run(api, part3).result;
@@ -215,15 +262,15 @@ Problem problem_1b() {
                }},
               {"ii. in simulation PART1 brings the tip to x_d and holds it", 3,
                "If the tip sags, check p; if it oscillates or runs away, check the signs and Lambda_v.",
-               part1_holds_the_tip},
+               part1_holds_the_tip, "hw2-p1 1"},
               {"iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d", 4,
                "Only the dynamically consistent projector keeps the joint task out of the tip's way; "
                "without g in the joint task, joint 2 sags instead of following q_d.",
-               part3_holds_the_tip_while_q2_moves},
+               part3_holds_the_tip_while_q2_moves, "hw2-p1 3"},
               {"iii. in simulation the PART2 tip drifts at least ten times more than PART3's", 3,
                "PART2 must use the pseudo-inverse projector, PART3 the dynamically consistent one: "
                "the difference is the point of the problem.",
-               part2_drifts_more_than_part3},
+               part2_drifts_more_than_part3, "hw2-p1 compare"},
           }};
 }
 

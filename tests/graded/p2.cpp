@@ -8,14 +8,18 @@
 //   compared with the law's oracle at the same State and Goal (law_pin.hpp).
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/scenarios.hpp>
+#include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 #include "law_pin.hpp"
 #include "oracles.hpp"
+#include "run_figure.hpp"
 #include "suite.hpp"
 #include "support/problem2.hpp"
 #include "support/random.hpp"
@@ -150,7 +154,7 @@ const Run& run(const Hw2Api& api) {
   auto it = cache.find(key);
   if (it == cache.end()) {
     scenarios::RunOptions options;
-    options.duration = p2::kDefaultDuration;  // two periods: the drift test compares them
+    options.duration = scenarios::graded_duration("2");  // two periods: the drift test compares them
     Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
     const auto pinned = [control = api.p2.control, &pin = made.pin](const hw2::p2::State& s,
                                                                     const hw2::p2::Goal& goal) {
@@ -162,6 +166,71 @@ const Run& run(const Hw2Api& api) {
     it = cache.emplace(key, std::move(made)).first;
   }
   return it->second;
+}
+
+// The reference's run: the problem set's law (the oracles) in the same scenario.
+const p2::Result& reference_run() {
+  static const Hw2Api oracles = oracle::reference_api();
+  return run(oracles).result;
+}
+
+// The series the checks read (scenarios/graded.hpp, which the programs' --test replay shares).
+using p2::lambda_dot_lambda_d;
+using p2::position_error;
+const auto orientation_error_angle = &p2::orientation_angle;
+// How far the joint nearest a URDF limit is past it (rad; negative: within its limits).
+double limit_excess(const p2::Sample& s) {
+  double excess = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 7; ++i) {
+    const Body& body = iiwa().bodies[static_cast<std::size_t>(i)];
+    excess = std::max(excess, std::max(body.lower - s.q(i), s.q(i) - body.upper));
+  }
+  return excess;
+}
+// max_i |q_i(t) - q_i(t - kPeriod)| (rad) at each sample of `samples` from one period on, 0 before.
+auto period_drift(const std::vector<p2::Sample>& samples) {
+  return [&samples](const p2::Sample& s) {
+    const auto k = static_cast<std::size_t>(&s - samples.data());
+    const auto per_period = static_cast<std::size_t>(std::lround(p2::kPeriod / (samples.size() > 1 ? samples[1].t - samples[0].t : 1.0)));
+    return k >= per_period && per_period > 0 ? (s.q - samples[k - per_period].q).cwiseAbs().maxCoeff() : 0.0;
+  };
+}
+
+// The figure of `value` in the student's run `r` and the reference's ("2 " + key).
+template <class Value>
+RunFigure figure_of(RunFigure f, const p2::Result& r, Value value, const std::string& key) {
+  f.judged_from = p2::kSettleTime;
+  return run_figure(f, r.samples, value, "2 " + key, [value] { return decimate(reference_run().samples, value); });
+}
+
+// The figure of `test` (its first check's quantity) in the student's run.
+void figure(const std::string& test, const Hw2Api& api, Check& check) {
+  const p2::Result& r = run(api).result;
+  RunFigure f;
+  if (test == "position") {
+    f.quantity = "position error |x_p - x_pd|", f.unit = "mm", f.unit_scale = 1e3;
+    f.bound = p2::kPositionErrorRmsMax, f.judged = "its RMS after 1 s";
+    check.figure(figure_of(f, r, position_error, "position error"));
+  } else if (test == "orientation") {
+    f.quantity = "orientation error (angle of R R_d^T)", f.unit = "deg", f.unit_scale = 1.0 / kDeg;
+    f.bound = p2::kOrientationErrorRmsMax, f.judged = "its RMS after 1 s";
+    check.figure(figure_of(f, r, orientation_error_angle, "orientation error"));
+  } else if (test == "limits") {
+    f.quantity = "largest excursion past a URDF joint limit", f.unit = "deg", f.unit_scale = 1.0 / kDeg;
+    f.bound = p2::kJointLimitExcessMax, f.judged = "its largest value over the run";
+    check.figure(figure_of(f, r, limit_excess, "joint limit excess"));
+  } else if (test == "drift") {
+    f.quantity = "joint drift over one period, max_i |q_i(t) - q_i(t - 5 s)|", f.unit = "deg", f.unit_scale = 1.0 / kDeg;
+    f.bound = p2::kJointDriftPerPeriodMax, f.judged = "its value at the end of the run";
+    f.judged_from = p2::kSettleTime + p2::kPeriod;
+    RunFigure made = run_figure(f, r.samples, period_drift(r.samples), "2 joint drift",
+                                [] { return decimate(reference_run().samples, period_drift(reference_run().samples)); });
+    check.figure(std::move(made));
+  } else {
+    f.quantity = "lambda . lambda_d (lambda flips where it would cross 0)";
+    f.judged = "no bound on it: the check reads the largest step of lambda";
+    check.figure(figure_of(f, r, lambda_dot_lambda_d, "lambda dot lambda_d"));
+  }
 }
 
 // The run went to its end and applied the problem set's law at every tick: the run's result.
@@ -176,6 +245,7 @@ const p2::Result* ran_the_law(const Hw2Api& api, Check& check) {
 }
 
 void position_tracking(const Hw2Api& api, Check& check) {
+  figure("position", api, check);
   const p2::Result* ran = ran_the_law(api, check);
   if (!ran) return;
   const p2::Result& r = *ran;
@@ -190,6 +260,7 @@ void position_tracking(const Hw2Api& api, Check& check) {
 }
 
 void orientation_tracking(const Hw2Api& api, Check& check) {
+  figure("orientation", api, check);
   const p2::Result* ran = ran_the_law(api, check);
   if (!ran) return;
   const p2::Result& r = *ran;
@@ -202,6 +273,7 @@ void orientation_tracking(const Hw2Api& api, Check& check) {
 }
 
 void euler_parameters_stay_continuous(const Hw2Api& api, Check& check) {
+  figure("lambda", api, check);
   const p2::Result* ran = ran_the_law(api, check);
   if (!ran) return;
   const p2::Result& r = *ran;
@@ -216,6 +288,7 @@ void euler_parameters_stay_continuous(const Hw2Api& api, Check& check) {
 }
 
 void joints_stay_near_their_limits(const Hw2Api& api, Check& check) {
+  figure("limits", api, check);
   const p2::Result* ran = ran_the_law(api, check);
   if (!ran) return;
   const p2::Result& r = *ran;
@@ -231,6 +304,7 @@ void joints_stay_near_their_limits(const Hw2Api& api, Check& check) {
 }
 
 void self_motion_is_damped(const Hw2Api& api, Check& check) {
+  figure("drift", api, check);
   const p2::Result* ran = ran_the_law(api, check);
   if (!ran) return;
   const p2::Result& r = *ran;
@@ -269,23 +343,23 @@ Problem problem_2() {
               {"d. in simulation link7's origin follows the desired position within 1 mm RMS after 1 s", 3,
                "A lag of a few mm that grows with the trajectory's curvature is a missing feed-forward "
                "[vdot_d; wdot_d]; centimetres mean the joint damping is not projected with N0^T.",
-               position_tracking},
+               position_tracking, "hw2-p2"},
               {"d. in simulation link7's orientation follows lambda_d within 0.01 rad RMS after 1 s", 3,
                "If link7 turns away from lambda_d, check the sign of delta_phi (-kpx delta_phi must turn it "
                "back); a steady lag of a few degrees is a missing feed-forward.",
-               orientation_tracking},
+               orientation_tracking, "hw2-p2"},
               {"d. in simulation lambda stays unit and continuous: link7 never turns half a turn from lambda_d", 1,
                "The library keeps lambda on the side of lambda_d; a jump means the orientation error reached "
                "180 degrees, i.e. the orientation feedback pushes away from lambda_d (sign of delta_phi).",
-               euler_parameters_stay_continuous},
+               euler_parameters_stay_continuous, "hw2-p2"},
               {"d. in simulation no joint goes more than 5 degrees past its URDF limit", 1,
                "A correct law follows the reference's joint path; an arm that swings far from it has an "
                "unstable task (check delta_phi's sign) or an undamped null space.",
-               joints_stay_near_their_limits},
+               joints_stay_near_their_limits, "hw2-p2"},
               {"d. in simulation the arm repeats its motion every period: the null-space self-motion is damped", 2,
                "Without N0^T A (-kvj dq) the elbow's self-motion is free: the task is tracked, but the arm's "
                "posture wanders a little more every period (and would eventually hit a joint limit).",
-               self_motion_is_damped},
+               self_motion_is_damped, "hw2-p2"},
           }};
 }
 

@@ -7,13 +7,16 @@
 //   tick of the run is compared with the law's oracle at the same State and Goal (law_pin.hpp).
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/scenarios.hpp>
+#include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "law_pin.hpp"
 #include "oracles.hpp"
+#include "run_figure.hpp"
 #include "suite.hpp"
 #include "support/random.hpp"
 
@@ -108,7 +111,7 @@ const Run& run(const Hw2Api& api) {
   auto it = cache.find(api.identity);
   if (it == cache.end()) {
     scenarios::RunOptions options;
-    options.duration = p3::kDefaultDuration;
+    options.duration = scenarios::graded_duration("3");  // as hw2-p3 --test replays it
     Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
     const auto pinned = [control = api.p3.control, &pin = made.pin](const hw2::p3::State& s,
                                                                     const hw2::p3::Goal& goal) {
@@ -120,6 +123,31 @@ const Run& run(const Hw2Api& api) {
     it = cache.emplace(api.identity, std::move(made)).first;
   }
   return it->second;
+}
+
+// The reference's run: the problem set's law (the oracles) in the same scenario.
+const p3::Result& reference_run() {
+  static const Hw2Api oracles = oracle::reference_api();
+  return run(oracles).result;
+}
+
+// The series the checks read (scenarios/graded.hpp, which the programs' --test replay shares).
+using p3::force_error;
+using p3::push;
+using p3::rotation_x_error;
+using p3::yz_error;
+const auto tilt = &p3::tilt_angle;
+
+// The figure of `quantity` (`value`, shown in `unit` = SI times `scale`) in the student's run and
+// the reference's, with the check's `bound` on what it reads of it (`judged`).
+template <class Value>
+void figure(const Hw2Api& api, Check& check, Value value, const std::string& quantity, const std::string& unit,
+            double scale, double bound, const std::string& judged) {
+  RunFigure f;
+  f.quantity = quantity, f.unit = unit, f.unit_scale = scale, f.bound = bound, f.judged = judged;
+  f.judged_from = p3::kSettleTime;
+  check.figure(run_figure(f, run(api).result.samples, value, "3 " + quantity,
+                          [value] { return decimate(reference_run().samples, value); }));
 }
 
 // The run went to its end and applied the problem set's law at every tick: the run's result.
@@ -138,6 +166,7 @@ bool touched(const p3::Result& r, Check& check) {
 }
 
 void contact_force(const Hw2Api& api, Check& check) {
+  figure(api, check, force_error, "force error |F_x - 10 N|", "N", 1.0, p3::kForceErrorMeanMax, "its mean after 1 s");
   const p3::Result* ran = ran_the_law(api, check);
   if (!ran || !touched(*ran, check)) return;
   const p3::Result& r = *ran;
@@ -152,6 +181,7 @@ void contact_force(const Hw2Api& api, Check& check) {
 }
 
 void tool_flat(const Hw2Api& api, Check& check) {
+  figure(api, check, tilt, "tilt of the tool against the plane", "deg", 1.0 / kDeg, p3::kTiltMax, "its largest value after 1 s");
   const p3::Result* ran = ran_the_law(api, check);
   if (!ran || !touched(*ran, check)) return;
   const p3::Result& r = *ran;
@@ -163,6 +193,7 @@ void tool_flat(const Hw2Api& api, Check& check) {
 }
 
 void yz_tracking(const Hw2Api& api, Check& check) {
+  figure(api, check, yz_error, "|(y - y_d, z - z_d)|", "mm", 1e3, p3::kYzErrorRmsMax, "its RMS after 1 s");
   const p3::Result* ran = ran_the_law(api, check);
   if (!ran) return;
   const p3::Result& r = *ran;
@@ -175,6 +206,7 @@ void yz_tracking(const Hw2Api& api, Check& check) {
 }
 
 void rotation_tracking(const Hw2Api& api, Check& check) {
+  figure(api, check, rotation_x_error, "rotation-about-x error", "deg", 1.0 / kDeg, p3::kRotationXErrorRmsMax, "its RMS after 1 s");
   const p3::Result* ran = ran_the_law(api, check);
   if (!ran) return;
   const p3::Result& r = *ran;
@@ -186,6 +218,7 @@ void rotation_tracking(const Hw2Api& api, Check& check) {
 }
 
 void contact_kept(const Hw2Api& api, Check& check) {
+  figure(api, check, push, "push F_x on the plane (contact while above 0)", "N", 1.0, std::numeric_limits<double>::quiet_NaN(), "the steps after 1 s at which it is 0");
   const p3::Result* ran = ran_the_law(api, check);
   if (!ran || !touched(*ran, check)) return;
   const p3::Result& r = *ran;
@@ -215,21 +248,21 @@ Problem problem_3() {
                law},
               {"c. in simulation the tool pushes on the plane with 10 N (mean error after 1 s)", 3,
                "Far more than 10 N: the force went through Lambda0. Less: a motion command still acts along x.",
-               contact_force},
+               contact_force, "hw2-p3"},
               {"c. in simulation the tool face stays flat on the plane", 2,
                "A tilted disc presses with its rim: a moment about y or z is applied (Omega-bar F_d has none), or "
                "the arm is not pressing the tool on the plane at all.",
-               tool_flat},
+               tool_flat, "hw2-p3"},
               {"c. in simulation link7's origin follows y_d and z_d", 2,
                "y and z are motion directions: the PD with feed-forward through Lambda0 Omega.",
-               yz_tracking},
+               yz_tracking, "hw2-p3"},
               {"c. in simulation link7 follows the rotation about x of lambda_d", 2,
                "The rotation about x is a motion direction: delta_phi's x component with feed-forward.",
-               rotation_tracking},
+               rotation_tracking, "hw2-p3"},
               {"c. in simulation the tool never leaves the plane after the first second", 1,
                "The force F_x = 10 N presses the tool at all times; losing contact means the x direction is "
                "motion-controlled or the force has the wrong sign.",
-               contact_kept},
+               contact_kept, "hw2-p3"},
           }};
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "grader.hpp"
+#include "report_html.hpp"
 
 namespace grading = opspace::grading;
 
@@ -175,4 +176,72 @@ TEST_CASE("extra_data.grader counts the grader's own failures, never the student
   std::ostringstream faulty;
   grading::write_gradescope(faulty, {f.ra, f.rb}, 1.0, {});
   CHECK(nlohmann::json::parse(faulty.str()).at("extra_data").at("grader").at("grader_faults") == 2);
+}
+
+TEST_CASE("the report's page escapes every text, draws each figure from its data and marks the wrong entries") {
+  // A failed simulated test whose finding and prints hold tags (as a student's exception text
+  // or prints may), with one figure, and a wrong vector whose second entry alone is wrong.
+  grading::Problem problem;
+  problem.key = "1b";
+  problem.tests.push_back({"iv. in simulation the tip holds", 4.0, "a <b>hint</b>", {}, "hw2-p1 3"});
+  grading::ProblemResult result;
+  result.problem = &problem;
+  result.max_score = 4.0;
+  grading::TestResult r;
+  r.test = &problem.tests[0];
+  r.findings = {"your code threw \"<script>alert(1)</script>\""};
+  r.printed = "<h1>Total: 20 / 20</h1>";
+  r.mistake = "PART3 projects with the pseudo-inverse, like PART2";
+  grading::RunFigure f;
+  f.quantity = "tip error |x - x_d|";
+  f.unit = "mm";
+  f.unit_scale = 1e3;
+  f.bound = 5e-3;
+  f.judged = "its largest value after 2 s";
+  f.judged_from = 2.0;
+  f.student = {{0.0, 5.0, 10.0}, {2e-3, 0.3, 0.1769}};
+  f.reference = {{0.0, 5.0, 10.0}, {2e-3, 4e-4, 5e-4}};
+  r.figures = {f};
+  r.table = {"Gamma", Eigen::Vector2d(1.0, 2.0), Eigen::Vector2d(1.0, 3.0), 1e-6};
+  result.results = {r};
+
+  std::ostringstream out;
+  grading::write_html_report(out, {result}, {}, 42);
+  const std::string page = out.str();
+  // No tag of the student's survives raw; each is shown as text.
+  CHECK(page.find("<script") == std::string::npos);
+  CHECK(page.find("<h1>Total") == std::string::npos);
+  CHECK(page.find("&lt;script&gt;alert(1)&lt;/script&gt;") != std::string::npos);
+  CHECK(page.find("&lt;h1&gt;Total: 20 / 20&lt;/h1&gt;") != std::string::npos);
+  CHECK(page.find("a &lt;b&gt;hint&lt;/b&gt;") != std::string::npos);
+  // The figure carries its series and final value in full, and draws both runs and the bound.
+  CHECK(page.find("data-final=\"0.1769\"") != std::string::npos);
+  CHECK(page.find("data-student-v=\"0.002 0.3 0.1769\"") != std::string::npos);
+  CHECK(page.find("data-reference-v=\"0.002 0.0004 0.0005\"") != std::string::npos);
+  CHECK(page.find("<polyline class=\"student\"") != std::string::npos);
+  CHECK(page.find("<polyline class=\"reference\"") != std::string::npos);
+  CHECK(page.find("<line class=\"bound\"") != std::string::npos);
+  // The replay command, with the seed.
+  CHECK(page.find("bash scripts/run hw2-p1 3 --test &quot;iv. in simulation the tip holds&quot; --seed 42") !=
+        std::string::npos);
+  // Entry 1 differs by 1 (beyond 1e-6 * 2): marked; entry 0 is right: not.
+  CHECK(page.find("<tr class=\"wrong\"><td>(1)</td><td>2</td><td>3</td><td>1</td></tr>") != std::string::npos);
+  CHECK(page.find("<tr><td>(0)</td><td>1</td><td>1</td><td>0</td></tr>") != std::string::npos);
+
+  // results.json: the run as a text table at the times that matter, the mistake as a tag, all
+  // escaped, and the replay command.
+  std::ostringstream json_text;
+  grading::write_gradescope(json_text, {result}, 1.0, {{}, "after_published", 42});
+  const nlohmann::json json = nlohmann::json::parse(json_text.str());
+  const nlohmann::json& test = json.at("tests").at(0);
+  CHECK(test.at("tags") == nlohmann::json::array({"mistake: PART3 projects with the pseudo-inverse, like PART2"}));
+  const std::string output = test.at("output");
+  CHECK(output.find("your run beside the reference's: tip error |x - x_d| (mm), bound at most 5 on its largest value after 2 s") !=
+        std::string::npos);
+  // Rows at t = 0 (the start), 2 s (where the check starts reading; shown at the nearest point,
+  // 0 s), 5 s (the student's largest value after 2 s) and 10 s (the end), values in mm.
+  CHECK(output.find("  5          300          0.4\n") != std::string::npos);
+  CHECK(output.find("  10         176.9        0.5\n") != std::string::npos);
+  CHECK(output.find("replay it on your machine: bash scripts/run hw2-p1 3") != std::string::npos);
+  CHECK(output.find('<') == std::string::npos);
 }

@@ -22,6 +22,11 @@
 #                               says MISSES and where the grader explains it
 #   check_visuals.sh out-dir    PROGRAM WORKDIR         the default outputs land in $OPSPACE_OUT
 #                               (the repository's out/ by default) wherever the program runs from
+#   check_visuals.sh report-page PAGE WORKDIR NODE CHECK_SCRIPT SCREENSHOT TEST
+#                               the grader's report page PAGE (written by the test "grader: a
+#                               PART3 with the pseudo-inverse projector ...") must pass
+#                               CHECK_SCRIPT (web/test/check_report_page.mjs) offline in headless
+#                               Chromium; SCREENSHOT is TEST's section
 # The programs write their default outputs into $OPSPACE_OUT: WORKDIR/out here, never the
 # repository's out/.
 # Exit 77 (ctest: skipped) when gnuplot, node, the viewer bundle or Chromium is missing,
@@ -118,6 +123,20 @@ case "$mode" in
     cd "$work"
     check_images out.txt run/cmp-drift.png run/cmp-drift.svg
     [ -s run/cmp-part2.csv ] && [ -s run/cmp-part3.csv ] || fail "the two logs were not written"
+    ;;
+  report-page)
+    [ $# -eq 7 ] || fail "report-page needs PAGE WORKDIR NODE CHECK_SCRIPT SCREENSHOT TEST"
+    page=$program node=$4 check=$5 screenshot=$6 focus=$7
+    [ -x "$node" ] || skip "node is not installed: the page cannot be checked in Chromium"
+    [ -x "${CHROMIUM:-/usr/bin/chromium}" ] || skip "Chromium is not installed (apt-get install chromium)"
+    [ -f "$check" ] || skip "$check is missing: the viewer's npm packages were not installed"
+    [ -s "$page" ] || fail "$page is missing: the grader's test that writes it did not run or failed"
+    mkdir -p "$(dirname "$screenshot")"
+    "$node" "$check" "$page" "$screenshot" "$focus"
+    status=$?
+    [ $status -eq 77 ] && skip "Chromium could not be started"
+    [ $status -eq 0 ] || fail "the report page failed in headless Chromium"
+    [ -s "$screenshot" ] || fail "no screenshot"
     ;;
   replay)
     [ $# -ge 7 ] || fail "replay needs NODE CHECK_SCRIPT SCREENSHOT MIN_ROBOT_SHARE and the program's arguments"

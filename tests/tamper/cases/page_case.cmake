@@ -20,7 +20,8 @@ file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/exercises")
 file(GLOB solutions "${REPO}/solutions/*.cpp")
 set(results "${WORK}/results.json")
-set(args --exercises "${WORK}/exercises" --gradescope "${results}" --timeout ${TIMEOUT} ${GRADER_ARGS})
+set(page "${WORK}/report.html")
+set(args --exercises "${WORK}/exercises" --gradescope "${results}" --html "${page}" --timeout ${TIMEOUT} ${GRADER_ARGS})
 
 if(MODE STREQUAL "tag")
   file(COPY ${solutions} DESTINATION "${WORK}/exercises")
@@ -98,6 +99,12 @@ if(MODE STREQUAL "tag")
   if(NOT shown MATCHES "#warning &lt;h1&gt;Total: 97 / 97 points&lt;/h1&gt;")
     message(FATAL_ERROR "results.json's output does not show the warning, escaped:\n${shown}")
   endif()
+  # The report's page (hw2-grade --html, issue 41) quotes the warning too, as text: the tag
+  # escaped, never an element. Seen to fail with the warnings written unescaped in report_html.cpp.
+  file(READ "${page}" html)
+  if(html MATCHES "<h1>Total" OR NOT html MATCHES "#warning &lt;h1&gt;Total: 97 / 97 points&lt;/h1&gt;")
+    message(FATAL_ERROR "the report's page does not quote the warning as escaped text:\n${html}")
+  endif()
 elseif(MODE STREQUAL "file_name")
   if(NOT shown MATCHES "'&lt;h2&gt;Total: 97 / 97 points&lt;/h2&gt;.cpp'" OR
      NOT shown MATCHES "'&lt;h2 style=color:green&gt;Total: 97 of 97 points.cpp'")
@@ -118,6 +125,11 @@ elseif(MODE STREQUAL "hidden")
   # The student's lines: the page's output and the printed report count 10 of 10, never 20.
   if(NOT shown MATCHES "^Problem 1b: 10 / 10 in the tests shown" OR shown MATCHES "20")
     message(FATAL_ERROR "results.json's output shows the hidden tests' points:\n${shown}")
+  endif()
+  # The report's page is the student's too: no hidden test's name on it.
+  file(READ "${page}" html)
+  if(html MATCHES "in simulation")
+    message(FATAL_ERROR "the report's page shows a hidden test")
   endif()
   if(NOT out MATCHES "\n  Problem 1b: 10 / 10 points in the tests shown" OR NOT out MATCHES "\nTotal: 10 / 10 points in the tests shown"
      OR out MATCHES "in simulation" OR out MATCHES " 20\n|/ 20 ")

@@ -1,0 +1,34 @@
+/// @file reference_runs.hpp
+/// The reference's series of the report's figures (grading.hpp: RunFigure): the problem set's
+/// law run by the grader in each simulated test's scenario. A run costs as much as the
+/// student's, so it is made only for a figure that needs it, a failed test's, and kept: for
+/// every later figure of this process, and on disk in the grader's cache (set_reference_store),
+/// where every later grading by the same grader finds it. A passed test's figure shows it when
+/// it is known already.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "grading.hpp"
+
+namespace opspace::grading {
+
+/// Keeps the series in `folder` too (created if missing), one file per series: the grader's
+/// cache folder for this grader (its toolchain's fingerprint names it, so that a rebuilt
+/// grader, whose scenarios or oracles may differ, never reads an older one's). Empty: in this
+/// process only.
+void set_reference_store(const std::string& folder);
+
+/// Whether the reference's series `key` is known already (in this process or in the store).
+bool reference_known(const std::string& key);
+
+/// The reference's series `key`, made by `make` the first time it is asked for.
+const Series& reference_series(const std::string& key, const std::function<Series()>& make);
+
+/// Fills the reference series of `figures`: all of them when `needed` (a failed test), else
+/// those already known.
+void attach_references(std::vector<RunFigure>& figures, bool needed);
+
+}  // namespace opspace::grading

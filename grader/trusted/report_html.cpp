@@ -1,0 +1,318 @@
+#include "report_html.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <sstream>
+
+#include "student_text.hpp"
+
+namespace opspace::grading {
+
+namespace {
+
+// The plot's box (px): the axes' margins around the data area.
+constexpr double kWidth = 640, kHeight = 240, kLeft = 64, kRight = 16, kTop = 14, kBottom = 36;
+// A student's series far beyond the scale of the bound and of the reference's run would squash
+// both onto the axis: beyond this many times that scale, a quantity that is never negative is
+// drawn on a logarithmic axis (from a thousandth of that scale), any other is cut at the top.
+constexpr double kClipFactor = 12.0;
+
+// Text for an attribute's value or an element: & < > escaped (student_text.hpp), and quotes.
+std::string text(const std::string& s) {
+  std::string out;
+  for (const char c : html_escape(s)) {
+    if (c == '"') out += "&quot;";
+    else if (c == '\'') out += "&#39;";
+    else out += c;
+  }
+  return out;
+}
+
+std::string num(double v, int digits) {
+  if (!std::isfinite(v)) return "NaN";
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+  return buffer;
+}
+
+// "0.01 0.02 ...": a series' values for a data- attribute.
+std::string joined(const std::vector<double>& values, int digits) {
+  std::string out;
+  for (const double v : values) out += (out.empty() ? "" : " ") + num(v, digits);
+  return out;
+}
+
+// A round step for about `count` ticks over `span` (1, 2 or 5 times a power of ten).
+double tick_step(double span, int count) {
+  const double raw = span / count;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 5.0})
+    if (m * magnitude >= raw) return m * magnitude;
+  return 10.0 * magnitude;
+}
+
+struct Range {
+  double lo = 0.0, hi = 1.0;
+  bool clipped = false;  // the student's series goes above hi
+  bool log = false;      // a logarithmic axis from lo > 0 to hi
+
+  // The height of value v in the data area, 0 (bottom) to 1 (top), v clamped to the range.
+  double at(double v) const {
+    v = std::clamp(v, lo, hi);
+    return log ? std::log10(v / lo) / std::log10(hi / lo) : (v - lo) / (hi - lo);
+  }
+};
+
+// The y range of `f`'s shown values: 0, both series, the bound; cut at kClipFactor times the
+// scale of the bound and the reference's run when the student's goes far beyond it.
+Range y_range(const RunFigure& f) {
+  double lo = 0.0, hi = 0.0, scale = 0.0;
+  const auto see = [&](double v) {
+    if (!std::isfinite(v)) return;
+    lo = std::min(lo, v * f.unit_scale);
+    hi = std::max(hi, v * f.unit_scale);
+  };
+  for (const double v : f.student.v) see(v);
+  for (const double v : f.reference.v) {
+    see(v);
+    if (std::isfinite(v)) scale = std::max(scale, std::abs(v * f.unit_scale));
+  }
+  if (std::isfinite(f.bound)) {
+    see(f.bound);
+    scale = std::max(scale, std::abs(f.bound * f.unit_scale));
+  }
+  Range r{lo, hi, false, false};
+  if (scale > 0.0 && hi > kClipFactor * scale) {
+    if (lo >= 0.0) {
+      r.log = true;
+      r.lo = std::pow(10.0, std::floor(std::log10(scale / 1000.0)));
+      r.hi = std::pow(10.0, std::ceil(std::log10(hi)));
+    } else {
+      r.hi = kClipFactor * scale, r.clipped = true;
+    }
+  }
+  if (r.hi - r.lo <= 0.0) r.hi = r.lo + 1.0;
+  return r;
+}
+
+// The points of `s` in the plot's pixels, values clipped to the range.
+std::string points(const Series& s, double scale, double t_end, const Range& y) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(1);
+  const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
+  for (std::size_t k = 0; k < s.t.size() && k < s.v.size(); ++k) {
+    if (!std::isfinite(s.v[k])) continue;
+    out << (k ? " " : "") << kLeft + w * s.t[k] / t_end << "," << kTop + h * (1.0 - y.at(s.v[k] * scale));
+  }
+  return out.str();
+}
+
+double end_time(const RunFigure& f) {
+  double t_end = 0.0;
+  for (const Series* s : {&f.student, &f.reference})
+    if (!s->t.empty()) t_end = std::max(t_end, s->t.back());
+  return t_end > 0.0 ? t_end : 1.0;
+}
+
+void axes(std::ostream& out, double t_end, const Range& y, const std::string& unit) {
+  const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
+  const auto px = [&](double t) { return kLeft + w * t / t_end; };
+  const auto py = [&](double v) { return kTop + h * (1.0 - y.at(v)); };
+  out << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << w << "\" height=\"" << h
+      << "\" fill=\"none\" stroke=\"#888\"/>\n";
+  const double dt = tick_step(t_end, 8);
+  for (double t = 0.0; t <= t_end * (1 + 1e-9); t += dt)
+    out << "<text x=\"" << px(t) << "\" y=\"" << kHeight - kBottom + 16 << "\" text-anchor=\"middle\">" << num(t, 4)
+        << "</text>\n";
+  out << "<text x=\"" << kLeft + w / 2 << "\" y=\"" << kHeight - 4 << "\" text-anchor=\"middle\">t (s)</text>\n";
+  std::vector<double> ticks;
+  if (y.log) {
+    for (double v = y.lo; v <= y.hi * (1 + 1e-9); v *= 10.0) ticks.push_back(v);
+  } else {
+    const double dv = tick_step(y.hi - y.lo, 5);
+    for (double v = std::ceil(y.lo / dv) * dv; v <= y.hi * (1 + 1e-9) + 1e-300; v += dv) ticks.push_back(v);
+  }
+  for (const double v : ticks)
+    out << "<text x=\"" << kLeft - 6 << "\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\">" << num(v, 4) << "</text>\n"
+        << "<line x1=\"" << kLeft << "\" x2=\"" << kWidth - kRight << "\" y1=\"" << py(v) << "\" y2=\"" << py(v)
+        << "\" stroke=\"#eee\"/>\n";
+  out << "<text x=\"14\" y=\"" << kTop + h / 2 << "\" transform=\"rotate(-90 14 " << kTop + h / 2
+      << ")\" text-anchor=\"middle\">" << text(unit) << (y.log ? " (log scale)" : "") << "</text>\n";
+}
+
+}  // namespace
+
+std::string svg_plot(const RunFigure& f) {
+  const double t_end = end_time(f);
+  const Range y = y_range(f);
+  const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
+  std::ostringstream out;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
+      << "\" viewBox=\"0 0 " << kWidth << " " << kHeight << "\" font-family=\"sans-serif\" font-size=\"11\" role=\"img\">\n";
+  // What the check does not read: shaded.
+  if (f.judged_from > 0.0)
+    out << "<rect class=\"unjudged\" x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\""
+        << w * std::min(f.judged_from, t_end) / t_end << "\" height=\"" << h << "\" fill=\"#f2f2f2\"/>\n";
+  axes(out, t_end, y, f.unit);
+  if (std::isfinite(f.bound)) {
+    const double yb = kTop + h * (1.0 - y.at(f.bound * f.unit_scale));
+    out << "<line class=\"bound\" x1=\"" << kLeft << "\" x2=\"" << kWidth - kRight << "\" y1=\"" << yb << "\" y2=\""
+        << yb << "\" stroke=\"#2ca02c\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\"/>\n";
+  }
+  if (!f.reference.t.empty())
+    out << "<polyline class=\"reference\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.5\" points=\""
+        << points(f.reference, f.unit_scale, t_end, y) << "\"/>\n";
+  out << "<polyline class=\"student\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"1.5\" points=\""
+      << points(f.student, f.unit_scale, t_end, y) << "\"/>\n";
+  out << "</svg>";
+  return out.str();
+}
+
+std::string run_table(const RunFigure& f) {
+  if (f.student.t.empty()) return "";
+  // The student's extreme where the check reads the run (the sign that breaks the bound).
+  std::size_t extreme = f.student.t.size() - 1;
+  for (std::size_t k = 0; k < f.student.t.size(); ++k) {
+    if (f.student.t[k] < f.judged_from) continue;
+    const double v = f.student.v[k], e = f.student.v[extreme];
+    if (!std::isfinite(v) || (std::isfinite(e) && (f.upper ? v > e : v < e))) extreme = k;
+    if (!std::isfinite(v)) break;
+  }
+  std::vector<double> times = {f.student.t.front(), f.judged_from, f.student.t[extreme], f.student.t.back()};
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  // The value of `s` at its point nearest `t`.
+  const auto at = [](const Series& s, double t) {
+    if (s.t.empty()) return std::string("-");
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < s.t.size(); ++k)
+      if (std::abs(s.t[k] - t) < std::abs(s.t[best] - t)) best = k;
+    return num(s.v[best], 4);
+  };
+  Series shown_student = f.student, shown_reference = f.reference;
+  for (double& v : shown_student.v) v *= f.unit_scale;
+  for (double& v : shown_reference.v) v *= f.unit_scale;
+  std::ostringstream out;
+  out << "your run beside the reference's: " << f.quantity << " (" << (f.unit.empty() ? "-" : f.unit) << ")";
+  if (std::isfinite(f.bound))
+    out << ", bound " << (f.upper ? "at most " : "at least ") << num(f.bound * f.unit_scale, 4) << " on " << f.judged;
+  out << "\n  t (s)      yours        reference\n";
+  for (const double t : times) {
+    char row[96];
+    std::snprintf(row, sizeof row, "  %-9s  %-11s  %s\n", num(t, 4).c_str(), at(shown_student, t).c_str(),
+                  at(shown_reference, t).c_str());
+    out << row;
+  }
+  return out.str();
+}
+
+namespace {
+
+void figure_block(std::ostream& out, const RunFigure& f) {
+  const double final_value = f.student.v.empty() ? NAN : f.student.v.back();
+  out << "<figure class=\"run\" data-quantity=\"" << text(f.quantity) << "\" data-unit=\"" << text(f.unit)
+      << "\" data-scale=\"" << num(f.unit_scale, 17) << "\" data-bound=\"" << num(f.bound, 17) << "\" data-upper=\""
+      << (f.upper ? 1 : 0) << "\" data-from=\"" << num(f.judged_from, 17) << "\" data-final=\"" << num(final_value, 17)
+      << "\"\n  data-student-t=\"" << joined(f.student.t, 7) << "\"\n  data-student-v=\"" << joined(f.student.v, 9)
+      << "\"\n  data-reference-t=\"" << joined(f.reference.t, 7) << "\"\n  data-reference-v=\""
+      << joined(f.reference.v, 9) << "\">\n"
+      << svg_plot(f) << "\n<figcaption>" << text(f.quantity) << ": <span class=\"key student\">your run</span>";
+  if (!f.reference.t.empty()) out << ", <span class=\"key reference\">the reference's (the problem set's law)</span>";
+  else out << " (the reference's run is drawn for a failed test)";
+  if (std::isfinite(f.bound))
+    out << ", <span class=\"key bound\">the bound</span>: " << (f.upper ? "at most " : "at least ")
+        << text(num(f.bound * f.unit_scale, 4) + " " + f.unit) << " on " << text(f.judged);
+  else if (!f.judged.empty())
+    out << "; the check reads " << text(f.judged);
+  if (f.judged_from > 0.0) out << "; the shaded start is not judged";
+  if (y_range(f).clipped) out << "; your run leaves the plot at the top";
+  if (y_range(f).log) out << "; the axis is logarithmic: your run goes far beyond the bound's scale";
+  out << ". Your final value: " << text(num(final_value * f.unit_scale, 6) + " " + f.unit) << ".</figcaption>\n</figure>\n";
+}
+
+// The entries of a wrong matrix or vector: expected, computed, difference; the wrong ones marked.
+void entry_table(std::ostream& out, const EntryTable& e) {
+  if (e.what.empty() || e.expected.size() > 100) return;
+  const double scale = std::max(1.0, e.expected.cwiseAbs().maxCoeff());
+  out << "<table class=\"entries\"><caption>" << text(e.what) << ", entry by entry (wrong beyond "
+      << text(num(e.tol * scale, 3)) << ")</caption>\n<tr><th>entry</th><th>expected</th><th>computed</th><th>difference</th></tr>\n";
+  for (Eigen::Index i = 0; i < e.expected.rows(); ++i) {
+    for (Eigen::Index j = 0; j < e.expected.cols(); ++j) {
+      const double x = e.expected(i, j), c = e.computed(i, j), d = c - x;
+      const bool wrong = !std::isfinite(c) || std::abs(d) > e.tol * scale;
+      const std::string where = e.expected.cols() == 1 ? std::to_string(i) : std::to_string(i) + ", " + std::to_string(j);
+      out << "<tr" << (wrong ? " class=\"wrong\"" : "") << "><td>(" << where << ")</td><td>" << num(x, 6) << "</td><td>"
+          << num(c, 6) << "</td><td>" << num(d, 3) << "</td></tr>\n";
+    }
+  }
+  out << "</table>\n";
+}
+
+void test_block(std::ostream& out, const ProblemResult& p, const TestResult& r, std::uint64_t seed) {
+  const std::string st = status(r);
+  out << "<section class=\"test " << (st == "PASS" ? "pass" : "fail") << "\" data-test=\""
+      << text(p.problem->key + " " + r.test->name) << "\" data-status=\"" << st << "\" data-simulated=\""
+      << (r.test->replay.empty() ? 0 : 1) << "\">\n<h3><span class=\"status\">" << st << "</span> "
+      << format_points(r.score) << "/" << format_points(r.test->points) << " " << text(r.test->name) << "</h3>\n";
+  if (r.score < r.test->points) {
+    out << "<ul class=\"findings\">\n";
+    for (const std::string& finding : r.findings) out << "<li>" << text(finding) << "</li>\n";
+    out << "</ul>\n";
+    if (!r.interrupted && !r.diagnosed) out << "<p class=\"hint\">hint: " << text(r.test->hint) << "</p>\n";
+    const std::string replay = replay_command(*r.test, seed);
+    if (!replay.empty()) out << "<p class=\"replay\">replay it: <code>" << text(replay) << "</code></p>\n";
+    entry_table(out, r.table);
+  }
+  for (const RunFigure& f : r.figures) figure_block(out, f);
+  if (!r.printed.empty()) out << "<p>your code printed:</p>\n<pre class=\"printed\">" << text(r.printed) << "</pre>\n";
+  out << "</section>\n";
+}
+
+constexpr const char* kStyle =
+    "body{font-family:sans-serif;max-width:60em;margin:1em auto;padding:0 1em;color:#222}"
+    "h2{border-bottom:1px solid #ccc;padding-bottom:.2em}h3{font-size:1em;margin:.2em 0}"
+    ".test{border-left:4px solid #2ca02c;padding:.3em .8em;margin:.8em 0}.test.fail{border-color:#d62728}"
+    ".status{font-weight:bold}.fail .status{color:#d62728}.pass .status{color:#2ca02c}"
+    "figure{margin:.5em 0}figcaption{font-size:.9em;color:#444}"
+    ".key.student{color:#d62728}.key.reference{color:#1f77b4}.key.bound{color:#2ca02c}"
+    "table.entries{border-collapse:collapse;font-size:.9em;margin:.5em 0}"
+    "table.entries td,table.entries th{border:1px solid #ccc;padding:.1em .5em;text-align:right}"
+    "tr.wrong{background:#fdd}code{background:#f4f4f4;padding:.1em .3em}pre.printed{background:#f4f4f4;padding:.5em}";
+
+}  // namespace
+
+void write_html_report(std::ostream& out, const std::vector<ProblemResult>& problems,
+                       const std::vector<std::string>& hidden, std::uint64_t seed) {
+  double total = 0.0, total_max = 0.0;
+  for (const ProblemResult& p : problems) {
+    const ShownScore shown = shown_score(p, hidden);
+    total += shown.score;
+    total_max += shown.max_score;
+  }
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>opspace: grade report</title>\n"
+      << "<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>Grade report: " << format_points(total) << " / "
+      << format_points(total_max) << " points</h1>\n<p>Seed " << seed
+      << " (<code>bash scripts/grade --seed " << seed << "</code> grades these inputs again). Each simulated test "
+      << "plots what its check reads: <span class=\"key student\">your run</span> and, for a failed test, "
+      << "<span class=\"key reference\">the reference's</span> (the problem set's law in the same scenario), with "
+      << "<span class=\"key bound\">the bound</span> (docs/grader.md, \"Reading a failed test's page\").</p>\n";
+  for (const ProblemResult& p : problems) {
+    const ShownScore shown = shown_score(p, hidden);
+    out << "<h2>Problem " << text(p.problem->key) << ": " << text(p.problem->title) << " (" << format_points(shown.score)
+        << " / " << format_points(shown.max_score) << ")</h2>\n";
+    if (!p.failure.empty()) out << "<pre class=\"printed\">" << text(p.failure) << "</pre>\n";
+    for (const std::string& note : p.notes) out << "<p class=\"note\">" << text(note) << "</p>\n";
+    for (const TestResult& r : p.results)
+      if (!is_hidden(p, r, hidden)) test_block(out, p, r, seed);
+    if (shown.hidden_tests > 0)
+      out << "<p>" << shown.hidden_tests << " hidden test(s) of " << format_points(shown.hidden_points)
+          << " points not shown: they count in the grade your instructor publishes.</p>\n";
+    if (!p.warnings.empty()) out << "<p>compiler warnings (not counted):</p>\n<pre class=\"printed\">" << text(p.warnings) << "</pre>\n";
+  }
+  out << "</body>\n</html>\n";
+}
+
+}  // namespace opspace::grading

@@ -1,0 +1,33 @@
+/// @file report_html.hpp
+/// The report as one offline page (scripts/grade writes out/grade/report.html): per problem and
+/// test the status, points, findings and hint; for a simulated test the plot of the student's
+/// run against the reference's with the check's bound (inline SVG, no script); for a wrong
+/// matrix or vector the table of its entries. Every text is HTML-escaped, the student's first
+/// of all (student_text.hpp). Each figure carries its numbers in data- attributes (the series,
+/// the bound, the final value), which the tests read instead of the picture.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "report.hpp"
+
+namespace opspace::grading {
+
+/// Writes the page of `problems`, leaving out the tests of `hidden` as print_report() does;
+/// `seed` is the run's (the replay commands name it).
+void write_html_report(std::ostream& out, const std::vector<ProblemResult>& problems,
+                       const std::vector<std::string>& hidden, std::uint64_t seed);
+
+/// One figure as inline SVG: the reference's series, the student's, the bound and the part of
+/// the run the check does not read, shaded.
+std::string svg_plot(const RunFigure& figure);
+
+/// "t (s) | yours | reference" rows of `figure` at the times that matter (the run's start, the
+/// start of what the check reads, the student's extreme there, the end): for results.json,
+/// which shows text only (docs/grader.md).
+std::string run_table(const RunFigure& figure);
+
+}  // namespace opspace::grading
