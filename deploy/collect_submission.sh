@@ -5,8 +5,9 @@
 #
 #   bash deploy/collect_submission.sh SUBMISSION OUT STUBS
 #
-# - p1a.cpp ... p4.cpp are taken from the submission's top folder, or from the one subfolder
-#   that holds them (a zipped folder, exercises/, hw2/exercises/ ...);
+# - p<key>.cpp, one per problem of problems.txt (p1a.cpp ...), are taken from the submission's
+#   top folder, or from the one subfolder that holds them (a zipped folder, exercises/,
+#   hw2/exercises/ ...);
 # - a file that is missing is replaced by the untouched stub from STUBS: it grades 0, with a note;
 # - a file with another name is not graded: the note names the expected ones; other files
 #   are ignored, with a note;
@@ -22,8 +23,24 @@ if [ $# -ne 3 ]; then
   exit 2
 fi
 submission=$1 out=$2 stubs=$3
-expected=(p1a.cpp p1b.cpp p2.cpp p3.cpp p4.cpp)
-expected_list="p1a.cpp, p1b.cpp, p2.cpp, p3.cpp, p4.cpp"
+# The exercise files: p<key>.cpp for each problem of the list (problems.txt).
+source "$(dirname "${BASH_SOURCE[0]}")/../scripts/problems.sh"
+expected=("${OPSPACE_KEYS[@]/#/p}")
+expected=("${expected[@]/%/.cpp}")
+expected_list=$(printf '%s, ' "${expected[@]}")
+expected_list=${expected_list%, }
+# is_expected NAME: NAME is one of the exercise files.
+is_expected() {
+  local e
+  for e in "${expected[@]}"; do [ "$1" = "$e" ] && return 0; done
+  return 1
+}
+# looks_like_exercise NAME (lower case): NAME holds an exercise file's stem (p1a_final.txt).
+looks_like_exercise() {
+  local e
+  for e in "${expected[@]}"; do [[ "$1" == *"${e%.cpp}"* ]] && return 0; done
+  return 1
+}
 max_bytes=$((1024 * 1024 + 1))
 
 mkdir -p "$out"
@@ -109,17 +126,17 @@ for rel in "${files[@]}"; do
   [ "$is_used" -eq 1 ] && continue
   name=${rel##*/}
   lower=$(printf '%s' "$name" | tr '[:upper:]' '[:lower:]')
-  case "$name" in
-    p1a.cpp | p1b.cpp | p2.cpp | p3.cpp | p4.cpp) ignored+=("$(shown "$rel") (another copy)"); continue ;;
-  esac
+  if is_expected "$name"; then
+    ignored+=("$(shown "$rel") (another copy)")
+    continue
+  fi
   case "$lower" in
-    *.cpp | *.cc | *.cxx | *.c++ | *.c | *.h | *.hpp | *.hh | *p1a* | *p1b* | *p2* | *p3* | *p4*)
-      wrong+=("$(shown "$rel")") ;;
-    *) ignored+=("$(shown "$rel")") ;;
+    *.cpp | *.cc | *.cxx | *.c++ | *.c | *.h | *.hpp | *.hh) wrong+=("$(shown "$rel")") ;;
+    *) if looks_like_exercise "$lower"; then wrong+=("$(shown "$rel")"); else ignored+=("$(shown "$rel")"); fi ;;
   esac
 done
 for rel in "${links[@]}"; do
-  case "${rel##*/}" in p1a.cpp | p1b.cpp | p2.cpp | p3.cpp | p4.cpp) continue ;; esac
+  is_expected "${rel##*/}" && continue
   ignored+=("$(shown "$rel") (a symbolic link)")
 done
 if [ ${#wrong[@]} -gt 0 ]; then

@@ -1,10 +1,13 @@
 cmake_minimum_required(VERSION 3.22)
 # One gradebook row from a results.json (scripts/regrade): the score of each problem (the sum
 # of its tests, named "<key> ..."), the total and the maximum, then a note when the grader
-# could not grade the submission. Problems without tests are left empty.
+# could not grade the submission. Problems without tests are left empty. The problems, in
+# their columns' order, are those of the list (problems.txt).
 #
 #   cmake -DJSON=results.json -DSTUDENT=name -DROW=row.csv -P scores.cmake
-set(keys 1a 1b 2 3 4)
+include(${CMAKE_CURRENT_LIST_DIR}/../grader/problems.cmake)
+opspace_read_problems(${CMAKE_CURRENT_LIST_DIR}/../problems.txt)
+set(keys ${OPSPACE_PROBLEM_KEYS})
 foreach(key IN LISTS keys)
   set(score_${key} "")
 endforeach()

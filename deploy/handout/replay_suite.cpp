@@ -175,12 +175,15 @@ Problem problem(const std::string& key) {
 
 }  // namespace
 
-Problem problem_1a() { return problem("1a"); }
-Problem problem_1b() { return problem("1b"); }
-Problem problem_2() { return problem("2"); }
-Problem problem_3() { return problem("3"); }
-Problem problem_4() { return problem("4"); }
+#define OPSPACE_REPLAYED_PROBLEM(key) \
+  Problem problem_##key() { return problem(#key); }
+OPSPACE_PROBLEM_KEYS(OPSPACE_REPLAYED_PROBLEM)
+#undef OPSPACE_REPLAYED_PROBLEM
 
-std::vector<Problem> graded_suite() { return {problem_1a(), problem_1b(), problem_2(), problem_3(), problem_4()}; }
+std::vector<Problem> graded_suite() {
+#define OPSPACE_SUITE_PROBLEM(key) problem_##key(),
+  return {OPSPACE_PROBLEM_KEYS(OPSPACE_SUITE_PROBLEM)};
+#undef OPSPACE_SUITE_PROBLEM
+}
 
 }  // namespace opspace::grading

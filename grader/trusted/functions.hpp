@@ -20,7 +20,7 @@ void for_each_function(Api& api, Visit&& visit) {
 #undef OPSPACE_VISIT_SLOT
 }
 
-/// The problem a function belongs to: "1a", "1b", "2", "3" or "4" (the code's high byte); ""
+/// The problem a function belongs to, its key in problems.txt ("1a": the code's high byte); ""
 /// for a code of no problem.
 inline std::string problem_of(protocol::Function function) {
   switch (static_cast<std::uint32_t>(function) >> 8) {

@@ -26,13 +26,13 @@ struct Mistake {
   std::vector<std::string> caught_by;  ///< names of the graded tests that must fail
 };
 
-std::vector<Mistake> mistakes_1a();  ///< problem 1a (mistakes_p1a.cpp)
-std::vector<Mistake> mistakes_1b();  ///< problem 1b
-std::vector<Mistake> mistakes_2();   ///< problem 2
-std::vector<Mistake> mistakes_3();   ///< problem 3
-std::vector<Mistake> mistakes_4();   ///< problem 4
+/// mistakes_1a() ...: each problem's mistakes (tests/graded/mistakes_p<key>.cpp), one per
+/// problem of the list (protocol/problems.hpp).
+#define OPSPACE_DECLARE_MISTAKES(key) std::vector<Mistake> mistakes_##key();
+OPSPACE_PROBLEM_KEYS(OPSPACE_DECLARE_MISTAKES)
+#undef OPSPACE_DECLARE_MISTAKES
 
-/// The mistakes of problem `key` ("1a", ... "4"); empty for an unknown key.
+/// The mistakes of problem `key` ("1a", ...); empty for an unknown key.
 std::vector<Mistake> mistakes(const std::string& key);
 
 /// Every known mistake.

@@ -67,7 +67,8 @@ rm -rf "$work"/submission-* "$work/stubs"
 
 stubs="$work/stubs"
 mkdir -p "$stubs"
-for f in p1a p1b p2 p3 p4; do git -C "$repo" show "HEAD:exercises/$f.cpp" > "$stubs/$f.cpp"; done
+source "$repo/scripts/problems.sh"
+for key in "${OPSPACE_KEYS[@]}"; do git -C "$repo" show "HEAD:exercises/p$key.cpp" > "$stubs/p$key.cpp"; done
 
 # grade NAME: grades $work/NAME (the submission) and keeps its results as $work/NAME.json.
 grade() {
@@ -84,13 +85,13 @@ grade() {
 mkdir -p "$work/submission-stubs"
 cp "$stubs"/*.cpp "$work/submission-stubs/"
 grade submission-stubs
-cmake -DJSON="$work/submission-stubs.json" "-DZERO=1a;1b;2;3;4" -P "$check"
+cmake -DJSON="$work/submission-stubs.json" -DZERO=ALL -P "$check"
 
 mkdir -p "$work/submission-reference"
 cp "$repo"/solutions/p*.cpp "$work/submission-reference/"
 grade submission-reference
 # The grader options of the bundle apply: --hidden "in simulation" hides those tests alone.
-cmake -DJSON="$work/submission-reference.json" "-DFULL=1a;1b;2;3;4" "-DHIDDEN=in simulation" -P "$check"
+cmake -DJSON="$work/submission-reference.json" -DFULL=ALL "-DHIDDEN=in simulation" -P "$check"
 
 mkdir -p "$work/submission-broken"
 cp "$repo"/solutions/p*.cpp "$work/submission-broken/"
@@ -102,8 +103,9 @@ mkdir -p "$work/submission-malformed"
 printf '%%PDF-1.4\n' > "$work/submission-malformed/answers.pdf"
 cp "$repo/solutions/p1a.cpp" "$work/submission-malformed/P1A.CPP"
 grade submission-malformed
-cmake -DJSON="$work/submission-malformed.json" "-DZERO=1a;1b;2;3;4" \
-  "-DOUTPUT=No exercise file was found;'P1A.CPP'.*the grader reads only p1a.cpp, p1b.cpp, p2.cpp, p3.cpp, p4.cpp;Ignored.*answers.pdf" \
+files=$(printf 'p%s.cpp, ' "${OPSPACE_KEYS[@]}")
+cmake -DJSON="$work/submission-malformed.json" -DZERO=ALL \
+  "-DOUTPUT=No exercise file was found;'P1A.CPP'.*the grader reads only ${files%, };Ignored.*answers.pdf" \
   -P "$check"
 
 mkdir -p "$work/submission-folder/hw2-main/exercises"

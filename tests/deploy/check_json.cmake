@@ -1,13 +1,21 @@
 cmake_minimum_required(VERSION 3.22)
 # Checks a results.json written by run_autograder or scripts/regrade:
 # - it parses, with a numeric score and a tests[] array (empty only if EMPTY is set);
-# - each problem in FULL earned all its points, each in ZERO none (tests are named "<key> ...");
+# - each problem in FULL earned all its points, each in ZERO none (tests are named "<key> ...";
+#   ALL: every problem of the list, problems.txt);
 # - "output" matches every regular expression in OUTPUT (a list);
 # - the tests whose name matches HIDDEN (a regular expression; one at least) are HIDDEN_AS
 #   (default after_published: hw2-grade --hidden), the others visible;
 # - its texts are declared "text" (output_format), and hold no < or > raw.
-#   cmake -DJSON=file [-DFULL="1a;1b"] [-DZERO="2"] [-DOUTPUT="regex;regex"] [-DHIDDEN=regex]
+#   cmake -DJSON=file [-DFULL="1a;1b"|ALL] [-DZERO="2"|ALL] [-DOUTPUT="regex;regex"] [-DHIDDEN=regex]
 #         [-DHIDDEN_AS=after_due_date] [-DEMPTY=ON] -P check_json.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/../../grader/problems.cmake)
+opspace_read_problems(${CMAKE_CURRENT_LIST_DIR}/../../problems.txt)
+foreach(all FULL ZERO)
+  if(${all} STREQUAL "ALL")
+    set(${all} ${OPSPACE_PROBLEM_KEYS})
+  endif()
+endforeach()
 if(NOT DEFINED HIDDEN_AS)
   set(HIDDEN_AS after_published)
 endif()

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The student handout from this repository (scripts/handout), and its README's two commands
-# run inside it as a student would: command 1 grades the untouched stubs at 0 of 97, command 2
-# passes every test. CI runs this after scripts/test (.ci/run).
+# run inside it as a student would: command 1 grades the untouched stubs at 0 of all the points
+# (problems.txt), command 2 passes every test. CI runs this after scripts/test (.ci/run).
 #   bash tests/deploy/handout.sh REPO WORK
 set -euo pipefail
 repo=$1 work=$2
@@ -19,7 +19,8 @@ head -5 README.md | grep -qx 'bash scripts/grade    # installs what is missing, 
 head -6 README.md | grep -qx 'bash scripts/test     # installs what is missing, builds, runs every test (ctest)'
 
 bash scripts/grade > "$work/grade.log" 2>&1 || { tail -40 "$work/grade.log"; echo "README command 1 failed"; exit 1; }
-grep -E '^Total: 0 / 97 points' "$work/grade.log" || { tail -40 "$work/grade.log"; echo "the stubs did not score 0 of 97"; exit 1; }
+source scripts/problems.sh
+grep -E "^Total: 0 / $OPSPACE_TOTAL points" "$work/grade.log" || { tail -40 "$work/grade.log"; echo "the stubs did not score 0 of $OPSPACE_TOTAL"; exit 1; }
 echo "handout: README command 1 graded the untouched stubs at 0 ($(( $(date +%s) - start )) s so far)"
 bash scripts/test
 echo "handout: README commands 1 and 2 work ($(( $(date +%s) - start )) s)"

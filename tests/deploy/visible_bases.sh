@@ -9,6 +9,7 @@ grader=$1 solutions=$2 work=$3
 rm -rf "$work"
 mkdir -p "$work/right" "$work/wrong"
 check="$(dirname "${BASH_SOURCE[0]}")/check_json.cmake"
+source "$(dirname "${BASH_SOURCE[0]}")/../../scripts/problems.sh"
 
 variant() {  # variant DIR BODY: the reference with singular_directions wrapped by BODY
   cp "$solutions"/p*.cpp "$1/"
@@ -27,9 +28,11 @@ variant "$work/wrong" '  d.u = Eigen::Matrix3d::Zero();
   d.u.leftCols(d.count) = Eigen::Matrix3d::Identity().leftCols(d.count);'
 
 "$grader" --exercises "$work/right" --gradescope "$work/right.json" > "$work/right.log"
-cmake -DJSON="$work/right.json" "-DFULL=1a;1b;2;3;4" -P "$check"
+cmake -DJSON="$work/right.json" -DFULL=ALL -P "$check"
 "$grader" --exercises "$work/wrong" --gradescope "$work/wrong.json" > "$work/wrong.log"
-cmake -DJSON="$work/wrong.json" "-DFULL=1a;1b;2;3" -P "$check"
+others=()  # every problem but 4
+for key in "${OPSPACE_KEYS[@]}"; do [ "$key" = 4 ] || others+=("$key"); done
+cmake -DJSON="$work/wrong.json" "-DFULL=$(IFS=';'; echo "${others[*]}")" -P "$check"
 grep -q 'singular_directions, recorded call' "$work/wrong.json" || { echo "the wrong subspace was not caught"; cat "$work/wrong.log"; exit 1; }
-grep -q '^Total: 97 / 97' "$work/wrong.log" && { echo "the wrong subspace earned full marks"; exit 1; }
+grep -q "^Total: $OPSPACE_TOTAL / $OPSPACE_TOTAL" "$work/wrong.log" && { echo "the wrong subspace earned full marks"; exit 1; }
 echo "any basis of the right subspace passes; a wrong subspace fails"

@@ -3,8 +3,9 @@ cmake_minimum_required(VERSION 3.22)
 # - the exit code is 0 (grading ran, whatever the score);
 # - results.json has Gradescope's fields with the right types: score, max_score,
 #   execution_time (numbers), tests[] of {name, score, max_score, status, output, visibility};
-# - each problem in FULL earned all its points (FULL=ALL: every problem), each in ZERO none
-#   (tests are named "<key> ...");
+# - each problem in FULL earned all its points (FULL=ALL: every problem, and each problem of the
+#   list, problems.txt, has tests worth its points there), each in ZERO none (tests are named
+#   "<key> ...");
 # - the printed report matches EXPECT (a regular expression), if given.
 #   cmake -DCOMMAND="prog;args" -DJSON=file [-DFULL="1a"] [-DZERO="1b"] [-DEXPECT=regex] -P check_results.cmake
 execute_process(COMMAND ${COMMAND} --gradescope "${JSON}" OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
@@ -27,6 +28,11 @@ if(count EQUAL 0)
   message(FATAL_ERROR "results.json: tests[] is empty")
 endif()
 
+include(${CMAKE_CURRENT_LIST_DIR}/../../grader/problems.cmake)
+opspace_read_problems(${CMAKE_CURRENT_LIST_DIR}/../../problems.txt)
+foreach(key IN LISTS OPSPACE_PROBLEM_KEYS)
+  set(max_${key} 0)
+endforeach()
 math(EXPR last "${count} - 1")
 foreach(i RANGE ${last})
   foreach(key name output)
@@ -56,5 +62,16 @@ foreach(i RANGE ${last})
   if(problem IN_LIST ZERO AND NOT score EQUAL 0)
     message(FATAL_ERROR "'${name}' earned ${score}; problem ${problem} should earn 0:\n${out}")
   endif()
+  if(NOT problem IN_LIST OPSPACE_PROBLEM_KEYS OR NOT max MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "'${name}': problem '${problem}' is not in problems.txt, or its ${max} points are not whole")
+  endif()
+  math(EXPR max_${problem} "${max_${problem}} + ${max}")
 endforeach()
+if(FULL STREQUAL "ALL")
+  foreach(key IN LISTS OPSPACE_PROBLEM_KEYS)
+    if(NOT max_${key} EQUAL OPSPACE_PROBLEM_POINTS_${key})
+      message(FATAL_ERROR "problem ${key}'s tests are worth ${max_${key}} points, problems.txt says ${OPSPACE_PROBLEM_POINTS_${key}}")
+    endif()
+  endforeach()
+endif()
 message("results.json is valid; ${count} tests checked")

@@ -4,19 +4,19 @@
 namespace opspace::grading {
 
 std::vector<Mistake> mistakes(const std::string& key) {
-  if (key == "1a") return mistakes_1a();
-  if (key == "1b") return mistakes_1b();
-  if (key == "2") return mistakes_2();
-  if (key == "3") return mistakes_3();
-  if (key == "4") return mistakes_4();
+#define OPSPACE_MISTAKES_OF(k) \
+  if (key == #k) return mistakes_##k();
+  OPSPACE_PROBLEM_KEYS(OPSPACE_MISTAKES_OF)
+#undef OPSPACE_MISTAKES_OF
   return {};
 }
 
 std::vector<Mistake> all_mistakes() {
   std::vector<Mistake> all;
-  for (const char* key : {"1a", "1b", "2", "3", "4"}) {
-    for (Mistake& m : mistakes(key)) all.push_back(std::move(m));
-  }
+#define OPSPACE_APPEND_MISTAKES(k) \
+  for (Mistake& m : mistakes_##k()) all.push_back(std::move(m));
+  OPSPACE_PROBLEM_KEYS(OPSPACE_APPEND_MISTAKES)
+#undef OPSPACE_APPEND_MISTAKES
   return all;
 }
 

@@ -2,6 +2,10 @@
 
 namespace opspace::grading {
 
-std::vector<Problem> graded_suite() { return {problem_1a(), problem_1b(), problem_2(), problem_3(), problem_4()}; }
+std::vector<Problem> graded_suite() {
+#define OPSPACE_SUITE_PROBLEM(key) problem_##key(),
+  return {OPSPACE_PROBLEM_KEYS(OPSPACE_SUITE_PROBLEM)};
+#undef OPSPACE_SUITE_PROBLEM
+}
 
 }  // namespace opspace::grading

@@ -1,0 +1,14 @@
+# The list of problems (problems.txt, at the top of the repository) for the shell: sourced by
+# scripts/regrade, deploy/collect_submission.sh and tests/deploy/*.sh. Sets
+#   OPSPACE_KEYS     the keys, in the list's order (1a 1b ...)
+#   OPSPACE_POINTS   each key's points, in the same order
+#   OPSPACE_TOTAL    their sum
+# grader/problems.cmake reads the same list for CMake, and checks its lines.
+OPSPACE_KEYS=() OPSPACE_POINTS=() OPSPACE_TOTAL=0
+while read -r opspace_key opspace_points _; do
+  case "$opspace_key" in '' | '#'*) continue ;; esac
+  OPSPACE_KEYS+=("$opspace_key")
+  OPSPACE_POINTS+=("$opspace_points")
+  OPSPACE_TOTAL=$((OPSPACE_TOTAL + opspace_points))
+done < "$(dirname "${BASH_SOURCE[0]}")/../problems.txt"
+unset opspace_key opspace_points
