@@ -13,11 +13,11 @@
 #      figure ends with, to 1e-9 m: the same scenario, law and arithmetic (scenarios/graded.hpp);
 #   3. results.json: valid, under 1 MB, no raw < or > in a text, the test tagged with the mistake
 #      the catalogue names and its output holding the run's text table.
-# Seen to fail: with the grader of main (no --html: "unknown argument"); with the figure's
-# reference series left empty (attach_references never called: check 1 fails, "no reference
-# series"); with the replay run at another duration (--duration 9.9 refused with --test; with
-# the graded duration changed to 9.999 s in cli.cpp, check 2 differs by 0.01 m); with the tags
-# removed from results.json (check 3).
+# Seen to fail: with the grader of main ("unknown or incomplete argument '--html'"); with
+# run_tests' attach_references() call removed (check 1: "the figure has no reference series
+# after 2 s"); with hw2-p1-sol, the reference law, as PROGRAM (check 2: its final tip error
+# 0.00047 m is not the figure's 0.17691 m); with results.json's tags, then its run tables,
+# removed (check 3 names the test).
 #   check_report_page.sh GRADER PROGRAM REPO WORK
 set -euo pipefail
 grader=$1 program=$2 repo=$3 work=$4

@@ -180,7 +180,8 @@ TEST_CASE("extra_data.grader counts the grader's own failures, never the student
 
 TEST_CASE("the report's page escapes every text, draws each figure from its data and marks the wrong entries") {
   // A failed simulated test whose finding and prints hold tags (as a student's exception text
-  // or prints may), with one figure, and a wrong vector whose second entry alone is wrong.
+  // or prints may), with one figure, and a wrong vector whose second entry alone is wrong. Seen
+  // to fail with report_html.cpp's text() returning its argument unescaped.
   grading::Problem problem;
   problem.key = "1b";
   problem.tests.push_back({"iv. in simulation the tip holds", 4.0, "a <b>hint</b>", {}, "hw2-p1 3"});

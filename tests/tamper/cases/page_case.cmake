@@ -100,7 +100,8 @@ if(MODE STREQUAL "tag")
     message(FATAL_ERROR "results.json's output does not show the warning, escaped:\n${shown}")
   endif()
   # The report's page (hw2-grade --html, issue 41) quotes the warning too, as text: the tag
-  # escaped, never an element. Seen to fail with the warnings written unescaped in report_html.cpp.
+  # escaped, never an element. Seen to fail with report_html.cpp's text() returning its argument
+  # unescaped.
   file(READ "${page}" html)
   if(html MATCHES "<h1>Total" OR NOT html MATCHES "#warning &lt;h1&gt;Total: 97 / 97 points&lt;/h1&gt;")
     message(FATAL_ERROR "the report's page does not quote the warning as escaped text:\n${html}")
