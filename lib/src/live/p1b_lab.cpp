@@ -11,6 +11,16 @@ namespace {
 
 constexpr Part kLaws[] = {Part::kTipPd, Part::kPseudoInverseNullspace, Part::kDynamicallyConsistentNullspace};
 
+// What the page says of the physics (docs/live.md, "What a push does to the tip").
+constexpr const char* kSubtitle =
+    "unpushed, PART3's tip holds while joint 2 moves and PART2's wanders; a push moves it under every law";
+constexpr const char* kNote =
+    "PART3's projector keeps the controller's own joint task from accelerating the tip: unpushed, its tip "
+    "stays within a millimetre of x_d while joint 2 swings; PART2's wanders by centimetres to decimetres. "
+    "A push is no controller torque: it reaches the tip as Jv A^-1 Je^T F, and the tip's PD holds it at the "
+    "static offset Jv A^-1 Je^T F / kpx (orange, for the push of the moment; the tip follows it about "
+    "kvx/kpx = 0.4 s late while the arm moves), undone when you let go. A stiffer kpx makes it smaller.";
+
 int law_of(Part part) {
   for (int i = 0; i < 3; ++i) {
     if (kLaws[i] == part) return i;
@@ -24,13 +34,8 @@ P1bLab::P1bLab(Part part, p1b::Controller control)
     : control_(std::move(control)), x_d_(p1b::goal(0.0, p1b::initial_q()).x_d) {
   info_.program = "hw2-p1";
   info_.title = "hw2-p1: problem 1b on the PUMA 560, live";
-  info_.subtitle = "unpushed, PART3's tip holds while joint 2 moves and PART2's wanders; a push moves it under every law";
-  info_.note =
-      "PART3's projector keeps the controller's own joint task from accelerating the tip: unpushed, its tip "
-      "stays within a millimetre of x_d while joint 2 swings; PART2's wanders by centimetres to decimetres. "
-      "A push is no controller torque: it reaches the tip as Jv A^-1 Je^T F, and the tip's PD holds it at the "
-      "static offset Jv A^-1 Je^T F / kpx (orange, for the push of the moment; the tip follows it about "
-      "kvx/kpx = 0.4 s late while the arm moves), undone when you let go. A stiffer kpx makes it smaller.";
+  info_.subtitle = kSubtitle;
+  info_.note = kNote;
   for (const Part p : kLaws) info_.laws.push_back(p1b::describe(p));
   info_.law = law_of(part);
   const hw2::p1b::Goal g = p1b::goal(0.0, p1b::initial_q());
