@@ -7,12 +7,13 @@
 
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+using opspace::kDeg;
 
 struct Setup {
   opspace::Model model;

@@ -12,6 +12,7 @@
 #include "explore.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
+#include "opspace/math/constants.hpp"
 #include "page_data.hpp"
 #include "robots.hpp"
 
@@ -19,7 +20,7 @@ namespace ex = opspace::explore;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using opspace::kPi;
 
 Eigen::Vector3d tip_at(const ex::Robot& r, const Eigen::VectorXd& q) {
   opspace::Data data(r.model);

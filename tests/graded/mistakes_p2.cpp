@@ -4,6 +4,7 @@
 // costs all five of them, whatever the run's behaviour; the comments say what the run shows.
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/hw2/p2.hpp>
+#include <opspace/math/constants.hpp>
 
 #include <cmath>
 
@@ -59,7 +60,6 @@ Vector7d with(const State& s, const Goal& goal) {
 // 2(a) with the chain rule half done: d^2/dt^2 sin(a) taken as cos(a) a'', the -sin(a) a'^2
 // term forgotten (and likewise for cos(a)), subtracted from the given 2(a).
 Vector7d without_a_dot_squared(const Fn<decltype(hw2::p2::desired_acceleration)>& right, double t) {
-  constexpr double kPi = 3.14159265358979323846;
   const double w = 2 * kPi / 5, s = 1 / std::sqrt(2.0);
   const double a = kPi / 4 * std::cos(w * t), a_dot = -kPi / 4 * w * std::sin(w * t);
   Vector7d wrong = right(t);

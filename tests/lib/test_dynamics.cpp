@@ -10,6 +10,7 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/algorithms/pp_robot.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
@@ -18,7 +19,6 @@ using opspace::testing::Random;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kStep = 1e-6;  // central differences: truncation ~ h^2, round-off ~ 1e-16 / h
 constexpr int kTrials = 25;
 

@@ -8,6 +8,7 @@
 
 #include "opspace/algorithms/euler_params.hpp"
 #include "opspace/algorithms/linalg.hpp"
+#include "opspace/math/constants.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;
@@ -15,7 +16,6 @@ using opspace::testing::Random;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Products of a few unit-size 4x3 matrices: round-off ~1e-16; 1e-12 leaves a wide margin.
 constexpr double kTol = 1e-12;
 

@@ -1,5 +1,5 @@
 // forward_kinematics composes rotations about coordinate axes by a plane rotation of two columns
-// and about any other axis by Rodrigues' formula (lib/src/algorithms/spatial.hpp): both must give
+// and about any other axis by Rodrigues' formula (lib/src/math/spatial.hpp): both must give
 // the definition, oMi = oMparent * placement * joint(q_i), on every robot and on a test tree with
 // tilted, signed and prismatic axes (tests/data/tilted_axes.urdf, which test_dynamics.cpp also
 // checks against the identities of rigid-body dynamics).
@@ -8,14 +8,13 @@
 #include <string>
 
 #include "opspace/algorithms/kinematics.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
 using namespace opspace;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// The pose of every body by the definition: Isometry3d products, the joint's motion as an
 /// AngleAxis rotation or a translation along the axis.

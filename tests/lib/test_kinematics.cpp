@@ -7,6 +7,7 @@
 #include <string>
 
 #include "opspace/algorithms/kinematics.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
@@ -16,8 +17,6 @@ using opspace::testing::Random;
 namespace {
 
 const char* const kRobots[] = {"pp.urdf", "puma.urdf", "iiwa7.urdf", "rrr.urdf"};
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 constexpr double kStep = 1e-6;  // central differences: truncation ~ h^2, round-off ~ 1e-16 / h
 constexpr double kFdTol = 1e-7;
 

@@ -16,6 +16,7 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/algorithms/opspace.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/model/model.hpp"
 #include "support/random.hpp"
 
@@ -23,8 +24,6 @@ using namespace opspace;
 using opspace::testing::Random;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// A random tree of n bodies: each body's parent is the previous body (four in five) or any earlier
 /// body or the base (a branch); one in four

@@ -19,13 +19,12 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/algorithms/opspace.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
 
 using namespace opspace;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string data_path(const std::string& file) { return std::string(OPSPACE_TEST_DATA_DIR) + "/" + file; }
 

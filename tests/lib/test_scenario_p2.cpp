@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "opspace/algorithms/euler_params.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/scenarios.hpp"
 #include "opspace/model/urdf.hpp"
 #include "support/problem2.hpp"
@@ -18,8 +19,6 @@ using opspace::testing::Random;
 namespace p2 = opspace::scenarios::p2;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

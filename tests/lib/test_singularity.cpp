@@ -10,6 +10,7 @@
 
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/algorithms/singularity.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
@@ -18,7 +19,7 @@ using opspace::testing::Random;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using opspace::kPi;
 
 Eigen::MatrixXd jv_at(const opspace::Model& model, const Eigen::VectorXd& q, int frame, const Eigen::Vector3d& p) {
   opspace::Data data(model);

@@ -6,15 +6,12 @@
 
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/live/push.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/scenarios/p1b.hpp"
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
 
 using namespace opspace;
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 TEST_CASE("the spring pulls with m (w^2 dx - 2 zeta w v), and no harder than its maximum") {
   const live::Spring spring;  // f = 1 Hz, zeta = 1, 50 N

@@ -3,8 +3,9 @@
 #include <stdexcept>
 
 #include "opspace/algorithms/kinematics.hpp"
-#include "small_decompositions.hpp"
-#include "spatial.hpp"
+#include "../math/small_decompositions.hpp"
+#include "../math/spatial.hpp"
+#include "body_spatial.hpp"
 
 namespace opspace {
 

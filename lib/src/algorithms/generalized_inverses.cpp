@@ -5,7 +5,7 @@
 #include <string>
 
 #include "opspace/algorithms/linalg.hpp"
-#include "small_decompositions.hpp"
+#include "../math/small_decompositions.hpp"
 
 namespace opspace {
 

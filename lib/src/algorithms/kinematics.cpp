@@ -3,7 +3,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "spatial.hpp"
+#include "../math/spatial.hpp"
+#include "body_spatial.hpp"
 
 namespace opspace {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "small_decompositions.hpp"
+#include "../math/small_decompositions.hpp"
 
 namespace opspace {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "inertia_check.hpp"
-#include "../algorithms/small_decompositions.hpp"
+#include "../math/small_decompositions.hpp"
 
 namespace opspace {
 

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <limits>
 
+#include "opspace/math/constants.hpp"
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/euler_params.hpp"
@@ -14,11 +15,6 @@
 namespace opspace::scenarios::p2 {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
-
-
 
 void summarise(Result& result, const Model& iiwa, double dt) {
   Summary& s = result.summary;

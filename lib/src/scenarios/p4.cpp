@@ -1,5 +1,6 @@
 #include <cmath>
 
+#include "opspace/math/constants.hpp"
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/scenarios.hpp"
@@ -12,11 +13,6 @@
 namespace opspace::scenarios::p4 {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
-
-
 
 void summarise(Result& result, const Eigen::Vector3d& x_d) {
   Summary& s = result.summary;

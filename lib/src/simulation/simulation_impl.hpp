@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "../algorithms/small_decompositions.hpp"
+#include "../math/small_decompositions.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 
 static_assert(sizeof(btScalar) == 8,

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "opspace/algorithms/euler_params.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
 #include "opspace/visuals/visuals.hpp"
 
@@ -14,7 +15,7 @@ namespace {
 constexpr const char* kMeasured = "#1f77b4";
 constexpr const char* kDesired = "#ff7f0e";
 constexpr const char* kAverage = "#2ca02c";
-constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+constexpr double kDegPerRad = 180.0 / kPi;
 
 using visuals::column;
 

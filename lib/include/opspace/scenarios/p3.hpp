@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "opspace/hw2/p3.hpp"
+#include "opspace/math/constants.hpp"
 #include "opspace/scenarios/p2.hpp"
 
 namespace opspace::scenarios {
@@ -46,7 +47,7 @@ inline constexpr double kForceErrorMeanMax = 1.0;
 /// commanded about y and z, the disc tilts only as far as the solver lets its rim sink in
 /// (thousandths of a degree). 0.5 deg would lift the opposite rim of the 0.08 m disc 0.35 mm
 /// off the plane: not flat any more.
-inline constexpr double kTiltMax = 0.5 * 3.14159265358979323846 / 180.0;
+inline constexpr double kTiltMax = 0.5 * kPi / 180.0;
 /// RMS |(y - y_d, z - z_d)| (m). As in problem 2 (p2::kPositionErrorRmsMax): without the
 /// feed-forward acceleration the PD lags y_d and z_d by 3.9 mm RMS (closed form); with it only
 /// the uncompensated Coriolis forces remain (tenths of a mm). 1 mm separates the two.
