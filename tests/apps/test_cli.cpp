@@ -165,3 +165,38 @@ TEST_CASE("--live takes --port, a port number, and --port alone is refused by na
     CHECK(bad.err == "hw2-p2: --port needs a port number from 0 (any free port) to 65535, not '" + std::string(value) + "'\n");
   }
 }
+
+TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, never with --duration") {
+  // The report's replay command (grader/trusted/report.cpp: replay_command) is
+  // `hw2-p1 3 --test "NAME" --seed N`: it must parse, and start_replay then sets the graded
+  // run's duration (scenarios/graded.hpp: 10 s for 1b, one period of q_d). Seen to fail on the
+  // parser before --test: "unknown argument '--test'", exit 2.
+  cli::P1Command command;
+  const std::string name = "iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d";
+  CHECK(p1({"hw2-p1", "3", "--test", name, "--seed", "41"}, command).code == -1);
+  CHECK(command.options.test == name);
+  CHECK(command.options.seed == 41);
+  command.options.run.duration = 3.0;
+  std::ostringstream said;
+  std::streambuf* saved = std::cout.rdbuf(said.rdbuf());
+  cli::start_replay(command.options, "1b");
+  std::cout.rdbuf(saved);
+  CHECK(command.options.run.duration == 10.0);
+  CHECK(said.str().find(name) != std::string::npos);
+  // A seed is a positive whole number, as the grader's --seed; a replay lasts the graded run.
+  for (const std::string bad : {"0", "-3", "x", ""}) {
+    cli::Options options;
+    const Outcome o = p2({"hw2-p2", "--test", "t", "--seed", bad}, options);
+    CHECK(o.code == 2);
+    CHECK(o.err.find("--seed") != std::string::npos);
+  }
+  cli::Options options;
+  Outcome o = p2({"hw2-p2", "--test", "t", "--duration", "2"}, options);
+  CHECK(o.code == 2);
+  CHECK(o.err.find("--duration does not apply with --test") != std::string::npos);
+  o = p2({"hw2-p2", "--test"}, options);
+  CHECK(o.code == 2);
+  CHECK(o.err.find("--test needs a value") != std::string::npos);
+  o = p2({"hw2-p2", "--test", ""}, options);
+  CHECK(o.code == 2);
+}
