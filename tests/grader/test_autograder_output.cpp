@@ -8,6 +8,7 @@
 
 #include "grader.hpp"
 #include "report_html.hpp"
+#include "run_figure.hpp"
 
 namespace grading = opspace::grading;
 
@@ -245,4 +246,34 @@ TEST_CASE("the report's page escapes every text, draws each figure from its data
   CHECK(output.find("  10         176.9        0.5\n") != std::string::npos);
   CHECK(output.find("replay it on your machine: bash scripts/run hw2-p1 3") != std::string::npos);
   CHECK(output.find('<') == std::string::npos);
+}
+
+TEST_CASE("a run's series is decimated to a plot's points, keeping its start, its peak and its end") {
+  // 10001 samples of 1 ms (a 10 s run) of a value 0 but one spike of 7 at sample 4321, and a
+  // final sample of 3: at most kFigurePoints points, the first and last samples as they were,
+  // and the spike kept (each stretch keeps its largest |value|), at its own time. Seen to fail
+  // with each stretch's first sample kept instead of its largest (spikes == 0).
+  struct Sample {
+    double t, v;
+  };
+  std::vector<Sample> samples;
+  for (int k = 0; k <= 10000; ++k) samples.push_back({1e-3 * k, k == 4321 ? 7.0 : k == 10000 ? 3.0 : 0.0});
+  const grading::Series s = grading::decimate(samples, [](const Sample& x) { return x.v; });
+  REQUIRE(s.t.size() == s.v.size());
+  CHECK(s.t.size() <= grading::kFigurePoints);
+  // The 9999 samples between the first and the last in stretches of ceil(9999 / 238) = 43:
+  // ceil(9999 / 43) = 233 points, and the first and the last: 235.
+  CHECK(s.t.size() == 235);
+  CHECK(s.t.front() == 0.0);
+  CHECK(s.t.back() == 10.0);
+  CHECK(s.v.back() == 3.0);
+  int spikes = 0;
+  for (std::size_t k = 0; k < s.v.size(); ++k) {
+    if (s.v[k] != 7.0) continue;
+    ++spikes;
+    CHECK(s.t[k] == samples[4321].t);
+  }
+  CHECK(spikes == 1);
+  // Times increase: a polyline drawn in order.
+  for (std::size_t k = 1; k < s.t.size(); ++k) CHECK(s.t[k] > s.t[k - 1]);
 }
