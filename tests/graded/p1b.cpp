@@ -213,6 +213,8 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
   check.figure(tip_figure(part2, run(api, part2).result, std::numeric_limits<double>::quiet_NaN(),
                           "its RMS after 2 s, at least 10 times PART3's"));
   check.figure(q2_figure(part2, run(api, part2).result, p1b::kPart2Q2ErrorMax));
+  check.figure(tip_figure(part3, run(api, part3).result, std::numeric_limits<double>::quiet_NaN(),
+                          "its RMS after 2 s, at most a tenth of PART2's"));
   if (!ran_the_law(run(api, part2), part2, check) || !ran_the_law(run(api, part3), part3, check)) return;
   const p1b::Result& r2 = run(api, part2).result;
   const p1b::Result& r3 = run(api, part3).result;
