@@ -15,10 +15,12 @@
 
 namespace opspace::grading {
 
-/// Keeps the series in `folder` too (created if missing), one file per series: the grader's
-/// cache folder for this grader (its toolchain's fingerprint names it, so that a rebuilt
-/// grader, whose scenarios or oracles may differ, never reads an older one's). Empty: in this
-/// process only.
+/// Makes the reference's series for the figures of failed tests, and keeps them in `folder` too
+/// (created if missing), one file per series: the grader's cache folder for this grader (its
+/// toolchain's fingerprint names it, so that a rebuilt grader, whose scenarios or oracles may
+/// differ, never reads an older one's). Empty: in this process only. Until it is called (the
+/// suite's own in-process tests, which grade dozens of mistakes and read no page), no reference
+/// run is made and a figure shows the student's run alone.
 void set_reference_store(const std::string& folder);
 
 /// Whether the reference's series `key` is known already (in this process or in the store).

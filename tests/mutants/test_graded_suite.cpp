@@ -4,9 +4,12 @@
 // score 0 is checked on the real hw2-grade program: see tests/graded/check_stubs.cmake.)
 #include <doctest/doctest.h>
 
+#include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <string>
 
+#include "grader.hpp"
 #include "linked_api.hpp"
 #include "mistakes.hpp"
 #include "oracles.hpp"
@@ -33,15 +36,29 @@ std::string join(const std::set<std::string>& names) {
   return out.empty() ? " (none)" : out;
 }
 
-// Every "likely mistake" line the grader prints for `api`, problem by problem.
-std::set<std::string> named_mistakes(const grading::Hw2Api& api) {
+// Every "likely mistake" line the grader prints for `api`, problem by problem; `json`, if given,
+// gets the results.json of the grading.
+std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* json = nullptr) {
   std::set<std::string> named;
-  for (const grading::Problem& problem : grading::graded_suite()) {
+  const std::vector<grading::Problem> suite = grading::graded_suite();
+  std::vector<grading::ProblemResult> graded;
+  for (const grading::Problem& problem : suite) {
     const std::vector<grading::Mistake> catalogue = grading::mistakes(problem.key);
-    for (const grading::TestResult& r : grading::run_tests(problem.tests, api, nullptr, 0.0, &catalogue)) {
+    grading::ProblemResult result;
+    result.problem = &problem;
+    result.results = grading::run_tests(problem.tests, api, nullptr, 0.0, &catalogue);
+    for (const grading::TestResult& r : result.results) {
+      result.score += r.score;
+      result.max_score += r.test->points;
       for (const std::string& f : r.findings)
         if (f.rfind("likely mistake: ", 0) == 0) named.insert(f);
     }
+    graded.push_back(std::move(result));
+  }
+  if (json) {
+    std::ostringstream out;
+    grading::write_gradescope(out, graded, 1.0, {{}, "after_published", 7});
+    *json = out.str();
   }
   return named;
 }
@@ -87,10 +104,21 @@ TEST_CASE("each known mistake made alone is named in the report, and only it") {
     grading::Hw2Api api = grading::linked_api();
     mistake.apply(api);
     api.identity = ++identity;
-    const std::set<std::string> named = named_mistakes(api);
+    std::string json;
+    const std::set<std::string> named = named_mistakes(api, &json);
     const std::string expected = "likely mistake: " + mistake.what + ". The problem set asks: " + mistake.instead;
     INFO("mistake: " << mistake.what << "\n  named:" << join(named));
     CHECK(named == std::set<std::string>{expected});
+    // Its results.json (issue 41): valid, under Gradescope's 1 MB, no raw < or > in a text, and
+    // every test it is named for tagged with it. Seen to fail with the tags left out.
+    CHECK(json.size() < 1048576);
+    const nlohmann::json results = nlohmann::json::parse(json);  // throws on invalid JSON
+    int tagged = 0;
+    for (const nlohmann::json& test : results.at("tests")) {
+      CHECK(test.at("output").get<std::string>().find_first_of("<>") == std::string::npos);
+      for (const nlohmann::json& tag : test.at("tags")) tagged += tag == "mistake: " + mistake.what ? 1 : 0;
+    }
+    CHECK(tagged > 0);
   }
 }
 
