@@ -24,6 +24,9 @@ foreach(line IN LISTS compile_lines)
   list(APPEND flags "${value}")
 endforeach()
 list(POP_FRONT flags compiler)
+# Without debug information: the attack needs the code alone, and the sanitized suite's -g made
+# a 24 MB assembly file that this script's line loop below took over 15 minutes to read.
+list(FILTER flags EXCLUDE REGEX "^-g")
 
 file(READ "${SOLUTIONS}/p4.cpp" reference)
 file(WRITE "${lto}/gated.cpp" "${reference}" [=[
