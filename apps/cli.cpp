@@ -79,7 +79,7 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
   }
   if (options.port != 0 && !options.live) return bad(argv[0], "'--port' applies to --live only (add --live)");
   if (!options.test.empty() && options.duration_given)
-    return bad(argv[0], "--duration does not apply with --test: a replay lasts as long as the graded run");
+    return bad(argv[0], "'--duration' does not apply with '--test': a replay lasts as long as the graded run");
   return -1;
 }
 

@@ -193,7 +193,7 @@ TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, neve
   cli::Options options;
   Outcome o = p2({"hw2-p2", "--test", "t", "--duration", "2"}, options);
   CHECK(o.code == 2);
-  CHECK(o.err.find("--duration does not apply with --test") != std::string::npos);
+  CHECK(o.err.find("'--duration' does not apply with '--test'") != std::string::npos);
   o = p2({"hw2-p2", "--test"}, options);
   CHECK(o.code == 2);
   CHECK(o.err.find("--test needs a value") != std::string::npos);
