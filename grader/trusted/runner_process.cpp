@@ -31,8 +31,9 @@ Limits runner_limits(double timeout_seconds) {
   l.cpu_seconds = static_cast<unsigned long long>(std::max(60.0, 10.0 * timeout_seconds));
   l.file_size = 1ull << 20;
   l.open_files = 16;
-  // A runner needs one process; 16 bound what a flood can take from gradings running at once
-  // (CPU and memory) under the grading's own account.
+  // A runner needs one process, and its system-call filter refuses it a second one
+  // (sandbox_seccomp.hpp); its threads count here too: 16 bound them under the grading's own
+  // account, where no filter is offered as well.
   l.processes = 16;
   return l;
 }

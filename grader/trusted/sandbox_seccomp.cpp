@@ -3,6 +3,7 @@
 #include "sandbox_seccomp.hpp"
 
 #include <linux/seccomp.h>
+#include <sched.h>
 #include <seccomp.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
@@ -92,6 +93,15 @@ std::vector<sock_filter> seccomp_filter(pid_t self, const void* exec_path) {
     add(context, eperm, "execve", 1, &other_path);
     add(context, eperm, "execveat", 0, nullptr);
     add(context, eperm, "setsid", 0, nullptr);
+    // No second process: a thread shares the runner's address space, and so its 1 GiB; a new
+    // process would bring another 1 GiB. clone() only with CLONE_THREAD (which the kernel
+    // accepts only with CLONE_VM); clone3() passes its flags in memory that a filter cannot
+    // read, so it answers ENOSYS, and glibc's pthread_create() then falls back to clone().
+    const scmp_arg_cmp not_thread = first_argument(SCMP_CMP_MASKED_EQ, CLONE_THREAD, 0);
+    add(context, eperm, "clone", 1, &not_thread);
+    add(context, SCMP_ACT_ERRNO(ENOSYS), "clone3", 0, nullptr);
+    add(context, eperm, "fork", 0, nullptr);
+    add(context, eperm, "vfork", 0, nullptr);
   }
 
   // libseccomp 2.5 exports to a descriptor only: a memory file, read back.

@@ -15,7 +15,9 @@
 ///   passes (its program; after it, the new program's memory holds no such pointer unless it
 ///   maps one there, and the runner's view of the files holds nothing else to execute),
 ///   execveat() never, and no new session (setsid: the scheduler groups a session's processes,
-///   so that a runner's processes share one group's time rather than taking a group each).
+///   so that a runner's processes share one group's time rather than taking a group each),
+///   and no second process: fork() and vfork() refused, clone() only for a thread (CLONE_THREAD,
+///   in the runner's own address space and its limit), clone3() answers ENOSYS.
 #pragma once
 
 #include <linux/filter.h>

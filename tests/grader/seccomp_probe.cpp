@@ -6,15 +6,19 @@
 // pointer (EFAULT), a missing path (ENOENT), or a call that succeeds.
 //   seccomp_probe [OTHER_PID]   also kill(OTHER_PID, 0), a live process of the same user
 //   seccomp_probe x32           getpid through the x32 ABI (x86_64): the filter kills the probe
+//   seccomp_probe processes     a second process by fork, vfork, clone and clone3, and a thread
 #include <fcntl.h>
+#include <pthread.h>
 #include <sched.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/syscall.h>
 #include <sys/uio.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -29,6 +33,37 @@ void report(const char* name, long result) {
   std::fflush(stdout);
 }
 
+// A child started by the call that returned `child` ends at once; 0 if there was one.
+long reap(long child) {
+  if (child == 0) _exit(0);
+  if (child > 0) waitpid(static_cast<pid_t>(child), nullptr, 0);
+  return child < 0 ? -1 : 0;
+}
+
+// clone3()'s argument, its first version (linux/sched.h's struct clone_args, 64 bytes).
+struct CloneArgs {
+  std::uint64_t flags, pidfd, child_tid, parent_tid, exit_signal, stack, stack_size, tls;
+};
+
+void* nothing(void*) { return nullptr; }
+
+// Each way of starting a process, then a thread: one line each, as report() writes them.
+void processes() {
+  report("fork", reap(fork()));
+  report("vfork", reap(vfork()));
+  report("clone_process", reap(syscall(SYS_clone, static_cast<long>(SIGCHLD), 0L, 0L, 0L, 0L)));
+#ifdef SYS_clone3
+  CloneArgs args{};
+  args.exit_signal = SIGCHLD;
+  report("clone3", reap(syscall(SYS_clone3, &args, sizeof args)));
+#endif
+  pthread_t thread;
+  const int error = pthread_create(&thread, nullptr, &nothing, nullptr);
+  if (error == 0) pthread_join(thread, nullptr);
+  errno = error;
+  report("thread", error == 0 ? 0 : -1);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -37,6 +72,10 @@ int main(int argc, char** argv) {
     syscall(0x40000000L + SYS_getpid);  // __X32_SYSCALL_BIT
 #endif
     std::printf("x32 survived\n");
+    return 0;
+  }
+  if (argc == 2 && std::strcmp(argv[1], "processes") == 0) {
+    processes();
     return 0;
   }
   // Refused with EPERM whatever the arguments.

@@ -49,8 +49,9 @@ Results parse(const std::string& text) {
   return out;
 }
 
-// The probe with `arguments`, under the filter built for its own pid; its output and wait status.
-std::string run_filtered(const std::vector<std::string>& arguments, int& status) {
+// The probe with `arguments`, under the filter built for its own pid (a runner's filter, whose
+// one execve() is the probe's, if `runner`); its output and wait status.
+std::string run_filtered(const std::vector<std::string>& arguments, int& status, bool runner = false) {
   int out[2];
   REQUIRE(pipe(out) == 0);
   const pid_t pid = fork();
@@ -62,7 +63,7 @@ std::string run_filtered(const std::vector<std::string>& arguments, int& status)
     std::vector<char*> argv{const_cast<char*>(OPSPACE_SECCOMP_PROBE)};
     for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    const std::vector<sock_filter> filter = grading::seccomp_filter(getpid());
+    const std::vector<sock_filter> filter = grading::seccomp_filter(getpid(), runner ? argv[0] : nullptr);
     if (!grading::install_seccomp_filter(filter.data(), filter.size())) _exit(120);
     char* env[] = {const_cast<char*>(kProbeEnvironment), nullptr};
     execve(argv[0], argv.data(), env);
@@ -171,6 +172,32 @@ TEST_CASE("kill() and tgkill() are refused for every pid but 0 and its own, on e
       CHECK_MESSAGE(answers[at] == 'R', "kill");
       CHECK_MESSAGE(answers[at + 1] == 'R', "tgkill");
     }
+  }
+}
+
+TEST_CASE("a runner may start a thread but no second process, and a tool such as the compiler may start both") {
+  // fork, vfork and clone without CLONE_THREAD would each bring a process with an address space
+  // (and a limit) of its own; clone3 hides its flags from the filter and answers ENOSYS, after
+  // which glibc's pthread_create() uses clone() with CLONE_THREAD.
+  for (const bool runner : {true, false}) {
+    CAPTURE(runner);
+    int status = 0;
+    const std::string text = run_filtered({"processes"}, status, runner);
+    CAPTURE(text);
+    REQUIRE(WIFEXITED(status));
+    REQUIRE(WEXITSTATUS(status) == 0);
+    const Results r = parse(text);
+    for (const char* call : {"fork", "vfork", "clone_process"}) {
+      CAPTURE(call);
+      REQUIRE(r.count(call) == 1);
+      CHECK_MESSAGE(r.at(call) == (runner ? EPERM : 0), "a runner's second process is refused with EPERM");
+    }
+#ifdef SYS_clone3
+    REQUIRE(r.count("clone3") == 1);
+    CHECK(r.at("clone3") == (runner ? ENOSYS : 0));
+#endif
+    REQUIRE(r.count("thread") == 1);
+    CHECK_MESSAGE(r.at("thread") == 0, "a thread shares the runner's address space and its limit: allowed");
   }
 }
 

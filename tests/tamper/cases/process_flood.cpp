@@ -1,7 +1,8 @@
 // Attack: start many processes that outlive the runner and leave a marker later.
-// The first calls of each runner fill its process limit (RLIMIT_NPROC); every later call could
-// only repeat forks that fail, which cost the machine 38 s of kernel time in the simulation
-// tests (thousands of calls, 300 failing forks each) and prove nothing more.
+// The runner's system-call filter refuses every fork; where no filter is offered, the first calls
+// of each runner fill its process limit (RLIMIT_NPROC). Every later call could only repeat forks
+// that fail, which cost the machine 38 s of kernel time in the simulation tests (thousands of
+// calls, 300 failing forks each) and prove nothing more.
 #include <opspace/hw2/p1b.hpp>
 #include <unistd.h>
 

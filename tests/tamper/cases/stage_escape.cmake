@@ -11,6 +11,8 @@
 #                 grader's cache of runners
 #   incbin        the compiler sees the library's archive (__has_include finds what .incbin
 #                 would embed): in the repository, or staged beside the exercise file
+#   process       a runner starts a second process (fork, vfork, clone, clone3), which would
+#                 have an address space and its 1 GiB limit of its own
 set(TARGET p4.cpp)
 set(FROM "#include <opspace/hw2/p4.hpp>")
 set(ROUTE "${FAULT}")
@@ -18,9 +20,12 @@ string(CONFIGURE [=[#include <opspace/hw2/p4.hpp>
 
 #include <fcntl.h>
 #include <glob.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
+#include <cstdint>
 #include <cstring>
 #include <string>
 
@@ -50,7 +55,22 @@ bool runs(const char* program, const char* argument) {
   return child > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+// A child of the call that returned `child` ends at once; true if there was one.
+bool started(long child) {
+  if (child == 0) _exit(0);
+  if (child > 0) waitpid(static_cast<pid_t>(child), nullptr, 0);
+  return child > 0;
+}
+
+bool second_process() {
+  struct { std::uint64_t flags, pidfd, child_tid, parent_tid, exit_signal, stack, stack_size, tls; } args{};
+  args.exit_signal = SIGCHLD;
+  return started(fork()) || started(vfork()) || started(syscall(SYS_clone, static_cast<long>(SIGCHLD), 0L, 0L, 0L, 0L)) ||
+         started(syscall(SYS_clone3, &args, sizeof args));
+}
+
 bool reached(const std::string& route) {
+  if (route == "process") return second_process();
   if (route == "other-runner")
     return any("../*/runner-*", "runner-4") || any("./runner-1*") || any("/tmp/opspace-runners-*/*/runner-*", "runner-4") ||
            any("/tmp/opspace-runners-*/runner-*", "runner-4");
