@@ -3,7 +3,8 @@
 //   node check_report_page.mjs PAGE.html SCREENSHOT.png [TEST]
 // Exit 0: the page loaded from its file alone (every other request refused and counted as an
 // error), no console error, every failed simulated test has a figure whose plot draws the
-// student's run, and, for TEST (its "<key> <name>"), the reference's run and the bound too; the
+// student's run, and, for TEST (its "<key> <name>"), the reference's run and the bound too (a
+// simulated TEST) or a table of entries with the wrong ones shaded red (a formula TEST); the
 // screenshot is of TEST's section (or of the page's top). 1: a check failed; 77: no Chromium.
 import { pathToFileURL } from 'node:url';
 import { checker, launch, openPage } from './chromium.mjs';
@@ -26,6 +27,7 @@ try {
     name: s.dataset.test,
     failed: s.dataset.status !== 'PASS',
     simulated: s.dataset.simulated === '1',
+    wrong: [...s.querySelectorAll('table.entries tr.wrong')].map((r) => getComputedStyle(r).backgroundColor),
     figures: [...s.querySelectorAll('figure.run')].map((f) => ({
       student: f.querySelectorAll('svg polyline.student').length,
       reference: f.querySelectorAll('svg polyline.reference').length,
@@ -35,7 +37,9 @@ try {
   })));
   check(tests.length > 0, `the page shows ${tests.length} tests`);
   const failed = tests.filter((t) => t.failed && t.simulated);
-  check(failed.length > 0, `${failed.length} failed simulated tests`);
+  // A page of formula tests alone (problem 1a's) has no simulated test to fail.
+  const focused = focus ? tests.find((x) => x.name === focus) : undefined;
+  if (!focused || focused.simulated) check(failed.length > 0, `${failed.length} failed simulated tests`);
   for (const t of failed) {
     check(t.figures.length > 0 && t.figures.every((f) => f.student === 1 && f.width > 100),
       `"${t.name}" has its figure (${t.figures.length}), each plotting the student's run`);
@@ -43,9 +47,15 @@ try {
   if (focus) {
     const t = tests.find((x) => x.name === focus);
     check(t !== undefined, `the page has "${focus}"`);
-    if (t) {
+    if (t && t.simulated) {
       check(t.figures.some((f) => f.reference === 1 && f.bound === 1),
         `"${focus}" plots the reference's run and the bound beside the student's`);
+    } else if (t) {
+      // A formula test: its table marks the wrong entries, shaded red by the page's style (a
+      // background whose red channel is above both others).
+      const red = (c) => { const [r, g, b] = (c.match(/\d+/g) || []).map(Number); return r > g && r > b; };
+      check(t.failed && t.wrong.length > 0 && t.wrong.every(red),
+        `"${focus}" failed and its table marks ${t.wrong.length} entries wrong, shaded red (${t.wrong.join(', ')})`);
     }
   }
   check(errors.length === 0, `no console error or refused request${errors.length ? `: ${errors.join('; ')}` : ''}`);
