@@ -29,7 +29,7 @@ set -uo pipefail
 program=$1 report=$2 test_name=$3 work=$4 offline_csv=$5 live_csv=$6 default_csv=$7
 shift 7
 default_args=("$@")
-live_seconds=2
+live_seconds=2  # about 2000 steps of 1 ms paced to the wall clock; the comparison needs 100
 
 fail() {
   echo "FAIL: $*" >&2
@@ -49,7 +49,7 @@ if [ "$offline_csv" = - ]; then
   OPSPACE_OUT="$work/served" OPSPACE_WATCHDOG=0 timeout 120 "$program" "${test_args[@]}" --live --port 0 --no-plots \
     --no-replay > "$work/served.txt" 2>&1 &
   pid=$!
-  for ((k = 0; k < 1200; ++k)); do
+  for ((k = 0; k < 1200; ++k)); do  # 120 s: the offline comparison simulates 2 x 10 s before it exits
     grep -q '^live: http://127\.0\.0\.1:[0-9]*/$' "$work/served.txt" && break
     kill -0 "$pid" 2> /dev/null || break
     sleep 0.1
@@ -83,7 +83,7 @@ live() {
   OPSPACE_OUT="$work/$name" OPSPACE_WATCHDOG=0 "$program" "$@" --live --port 0 --no-plots --no-replay \
     > "$work/$name.txt" 2>&1 &
   local pid=$! port="" k
-  for ((k = 0; k < 600; ++k)); do
+  for ((k = 0; k < 600; ++k)); do  # 60 s for the address: a loaded machine loads the URDF slowly
     port=$(sed -n 's|^live: http://127\.0\.0\.1:\([0-9]*\)/$|\1|p' "$work/$name.txt")
     [ -n "$port" ] && break
     kill -0 "$pid" 2> /dev/null || break
