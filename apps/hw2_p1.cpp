@@ -137,7 +137,7 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
 /// `part` live in the browser until Ctrl-C; then the session's log, plots and replay page.
 int live(Part part, const cli::Options& options, const std::string& prefix) {
   std::cout << "problem 1b live, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  opspace::live::P1bLab lab(part, &opspace::hw2::p1b::control);
+  opspace::live::P1bLab lab("hw2-p1", part, &opspace::hw2::p1b::control);
   return cli::serve_live(
       lab, options, prefix, [&] { return p1b::figures(lab.result(), lab.part()); },
       [&] { return p1b::replay_scene(lab.result(), lab.part()); });
@@ -156,6 +156,7 @@ int main(int argc, char** argv) {
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
   cli::start_replay(options, "1b");
   options.run.progress = &std::cerr;
+  options.run.label = "hw2-p1";
   const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);
   if (command.comparing) return cli::guarded(argv[0], [&] { return compare(options, prefix); });
   if (options.live) {

@@ -92,11 +92,12 @@ int main(int argc, char** argv) {
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
   cli::start_replay(options, "2");
   options.run.progress = &std::cerr;
+  options.run.label = "hw2-p2";
   std::cout << "problem 2, iiwa position + Euler-parameter tracking (" << OPSPACE_GRADED_LIBRARY << ")\n";
   if (options.live) {
 #ifdef OPSPACE_LIVE
     return cli::guarded(argv[0], [&] {
-      opspace::live::P2Lab lab(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration);
+      opspace::live::P2Lab lab("hw2-p2", &opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration);
       return cli::serve_live(
           lab, options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p2::figures(lab.result()); },
           [&] { return p2::replay_scene(lab.result()); });

@@ -98,12 +98,13 @@ int main(int argc, char** argv) {
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
   cli::start_replay(options, "3");
   options.run.progress = &std::cerr;
+  options.run.label = "hw2-p3";
   std::cout << "problem 3, iiwa unified motion and force control against a plane (" << OPSPACE_GRADED_LIBRARY
             << ")\n";
   if (options.live) {
 #ifdef OPSPACE_LIVE
     return cli::guarded(argv[0], [&] {
-      opspace::live::P3Lab lab(&opspace::hw2::p3::control);
+      opspace::live::P3Lab lab("hw2-p3", &opspace::hw2::p3::control);
       return cli::serve_live(
           lab, options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p3::figures(lab.result()); },
           [&] { return p3::replay_scene(lab.result()); });

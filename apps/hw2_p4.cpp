@@ -170,7 +170,7 @@ int main(int argc, char** argv) {
 #ifdef OPSPACE_LIVE
     return cli::guarded(argv[0], [&] {
       const Target target = command.targets.front();
-      opspace::live::P4Lab lab(target, &hw::control);
+      opspace::live::P4Lab lab("hw2-p4", target, &hw::control);
       const std::string prefix = cli::output_path(cli::program_name(argv[0]) + (target == Target::kAlongZ0 ? "-z" : "-y"));
       return cli::serve_live(
           lab, options, prefix,
@@ -191,6 +191,7 @@ int main(int argc, char** argv) {
     for (Target target : command.targets) {
       const std::string name = target == Target::kAlongZ0 ? "z" : "y";
       options.run.progress = &std::cerr;
+      options.run.label = "hw2-p4";
       const std::string prefix = cli::output_path(cli::program_name(argv[0]) + "-" + name);
       options.run.csv_path = prefix + ".csv";
       const p4::Result mine = p4::run(target, &hw::control, options.run);

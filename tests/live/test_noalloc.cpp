@@ -13,7 +13,7 @@ using hw2::p1b::Part;
 
 // Seen to fail: with p1b_static_tip_offset factoring A as an Eigen::MatrixXd, 2 allocations.
 TEST_CASE("the page's prediction of a push's offset allocates nothing in the control tick") {
-  live::P1bLab lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::P1bLab lab("hw2-p1", Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
   lab.tick();
   const Eigen::VectorXd torque = Eigen::VectorXd::LinSpaced(6, 10.0, -5.0);  // any Je^T F (N m)
   const long n = allocations_in([&] { lab.set_push_torque(torque); });
@@ -24,7 +24,7 @@ TEST_CASE("the page's prediction of a push's offset allocates nothing in the con
 // Seen to fail: before the Pusher kept its factorisation of A and L^-1 Jv^T as workspaces, 2
 // allocations per step of a push.
 TEST_CASE("a push's force and joint torques allocate nothing per step") {
-  live::P1bLab lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::P1bLab lab("hw2-p1", Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
   const Simulation& sim = lab.simulation();
   live::Pusher pusher(sim.model());
   const live::Spring spring;

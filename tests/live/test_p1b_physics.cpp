@@ -81,7 +81,7 @@ double largest_error(const Trace& trace, double from, double to) {
 TEST_CASE("a steady push on the elbow holds PART3's tip at the page's prediction Jv A^-1 Je^T F / kpx") {
   // At rest. Pushed from 1 s for 9 s; the arm's null-space drift under the push decays (its joints
   // but joint 2 have damping alone), to about 0.01 rad/s by 10 s.
-  live::P1bLab held(Part::kDynamicallyConsistentNullspace, &part3_held);
+  live::P1bLab held("hw2-p1", Part::kDynamicallyConsistentNullspace, &part3_held);
   const Trace still = run(held, 10.0, 1.0);
   const long end = static_cast<long>(still.e.size()) - 1;
   const Eigen::Vector3d e = still.e[end], predicted = still.predicted[end];
@@ -102,7 +102,7 @@ TEST_CASE("a steady push on the elbow holds PART3's tip at the page's prediction
   // itself, with derivatives by central differences: dde + kvx de + kpx (e - predicted) is what
   // the law leaves out, dJv dq - Jv A^-1 b, of order |dq|^2 times the arm's reach (0.9 m from
   // joint 2 to the tip), where the push alone gives kpx |predicted|, about 2.5 m/s^2.
-  live::P1bLab moving(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::P1bLab moving("hw2-p1", Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
   const Trace swing = run(moving, 5.0, 1.0);
   double residual = 0.0, largest_speed = 0.0;
   for (long k = std::lround(1.002 / kDt); k + 1 < static_cast<long>(swing.e.size()); ++k) {
@@ -124,11 +124,11 @@ TEST_CASE("unpushed, PART3's tip stays within a millimetre while joint 2 swings,
   // PART3: the identity without a push leaves the velocity terms alone; joint 2 swings at up to
   // (pi/8)(2 pi/10) = 0.25 rad/s, so they are of order 0.25^2 x 0.9 m = 0.06 m/s^2, which the tip's
   // stiffness holds to 0.06 / kpx = 1.1 mm: "within a millimetre".
-  live::P1bLab part3(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::P1bLab part3("hw2-p1", Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
   const double held = largest_error(run(part3, 10.0), p1b::kSettleTime, 10.0);
   // PART2: the joint task's torques (gravity among them) reach the tip through
   // Jv A^-1 (I - Jv^T Jv+^T), which is not zero: ten times PART3's bound at least, "centimetres".
-  live::P1bLab part2(Part::kPseudoInverseNullspace, &hw2::p1b::control);
+  live::P1bLab part2("hw2-p1", Part::kPseudoInverseNullspace, &hw2::p1b::control);
   const double wandered = largest_error(run(part2, 10.0), p1b::kSettleTime, 10.0);
   MESSAGE("largest tip error after 2 s, no push: PART3 " << 1e3 * held << " mm, PART2 " << 1e3 * wandered << " mm");
   CHECK(held <= 1e-3);
@@ -137,7 +137,7 @@ TEST_CASE("unpushed, PART3's tip stays within a millimetre while joint 2 swings,
 
 // Seen to fail: with page() leaving the ghost out (run.cpp), "ghost":null after set_reference too.
 TEST_CASE("the page carries the reference's tip path of each law, in the law switch's order") {
-  live::P1bLab lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::P1bLab lab("hw2-p1", Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
   CHECK_MESSAGE(live::page(lab, 50.0).find(R"("ghost":null)") != std::string::npos, "no reference given: no ghost");
   // Two points (p, 0, 0), (p, 1, 0) for PART p: the page's law i must get PART i+1's path.
   lab.set_reference(0.02, [](Part part) {

@@ -69,26 +69,26 @@ void check_same_log(live::Lab& lab, Offline offline, double duration, const std:
 TEST_CASE("the live loop, unpaced and with no input, logs what the offline run logs") {
   // The graded path is the offline run: the live lab must step the same closed loop, for every
   // problem. 0.5 s: 500 ticks of each law, contact included for problem 3 (it touches at once).
-  live::P1bLab p1b_lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::P1bLab p1b_lab("hw2-p1", Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
   check_same_log(p1b_lab, [](const scenarios::RunOptions& o) {
     return p1b::run(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control, o).samples.size();
   }, 0.5, "p1b");
-  live::P2Lab p2_lab(&hw2::p2::control, &hw2::p2::desired_acceleration);
+  live::P2Lab p2_lab("hw2-p2", &hw2::p2::control, &hw2::p2::desired_acceleration);
   check_same_log(p2_lab, [](const scenarios::RunOptions& o) {
     return scenarios::p2::run(&hw2::p2::control, &hw2::p2::desired_acceleration, o).samples.size();
   }, 0.5, "p2");
-  live::P3Lab p3_lab(&hw2::p3::control);
+  live::P3Lab p3_lab("hw2-p3", &hw2::p3::control);
   check_same_log(p3_lab, [](const scenarios::RunOptions& o) {
     return scenarios::p3::run(&hw2::p3::control, o).samples.size();
   }, 0.5, "p3");
-  live::P4Lab p4_lab(hw2::p4::Target::kAlongZ0, &hw2::p4::control);
+  live::P4Lab p4_lab("hw2-p4", hw2::p4::Target::kAlongZ0, &hw2::p4::control);
   check_same_log(p4_lab, [](const scenarios::RunOptions& o) {
     return scenarios::p4::run(hw2::p4::Target::kAlongZ0, &hw2::p4::control, o).samples.size();
   }, 0.5, "p4");
 }
 
 TEST_CASE("pause holds the time, reset returns to the start, the law and gains switch live") {
-  live::P1bLab lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::P1bLab lab("hw2-p1", Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
   live::Session session(lab, "");
   for (int k = 0; k < 100; ++k) session.step();
   CHECK(session.time() == doctest::Approx(0.1));
@@ -116,7 +116,7 @@ TEST_CASE("pause holds the time, reset returns to the start, the law and gains s
 }
 
 TEST_CASE("a push from the page pulls the picked link with the spring until it is released") {
-  live::P1bLab lab(Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
+  live::P1bLab lab("hw2-p1", Part::kDynamicallyConsistentNullspace, &hw2::p1b::control);
   live::Session session(lab, "");
   // The elbow (body 2, the PUMA's third of six bodies) pulled 10 cm up from where it is.
   const Eigen::Vector3d elbow = lab.simulation().body_pose(2).translation();
@@ -136,7 +136,7 @@ TEST_CASE("a push from the page pulls the picked link with the spring until it i
 
 TEST_CASE("a controller that returns NaN stops the run with its message, and a reset starts again") {
   bool fail = true;
-  live::P1bLab lab(Part::kDynamicallyConsistentNullspace,
+  live::P1bLab lab("hw2-p1", Part::kDynamicallyConsistentNullspace,
                    [&](Part part, const hw2::p1b::State& s, const hw2::p1b::Goal& g) {
                      p1b::Vector6d tau = hw2::p1b::control(part, s, g);
                      if (fail && s.t >= 0.05) tau(2) = NAN;
@@ -165,7 +165,7 @@ struct PushResponse {
 // A push of `force` on the elbow (link lower_arm, at the elbow joint) from t = 3 s to 3.2 s
 // under `part`, against the same run unpushed.
 PushResponse push_response(Part part, const Eigen::Vector3d& force) {
-  live::P1bLab pushed(part, &hw2::p1b::control), still(part, &hw2::p1b::control);
+  live::P1bLab pushed("hw2-p1", part, &hw2::p1b::control), still("hw2-p1", part, &hw2::p1b::control);
   const Model& puma = pushed.simulation().model();
   const int elbow = puma.joint_id("elbow");
   const int tip = puma.frame_id(p1b::kTipLink), elbow_frame = puma.frame_id(puma.bodies[elbow].link_name);

@@ -29,7 +29,7 @@ TEST_CASE("a controller that never returns ends the live program with the watchd
   if (child == 0) {
     dup2(err[1], STDERR_FILENO);
     close(err[0]);
-    live::P1bLab lab(Part::kDynamicallyConsistentNullspace,
+    live::P1bLab lab("hw2-p1", Part::kDynamicallyConsistentNullspace,
                      [](Part part, const hw2::p1b::State& s, const hw2::p1b::Goal& g) {
                        if (s.t >= 0.05) {
                          static std::atomic<bool> forever{true};

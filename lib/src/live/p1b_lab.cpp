@@ -28,31 +28,34 @@ int law_of(Part part) {
   return 2;
 }
 
-}  // namespace
-
-P1bLab::P1bLab(Part part, p1b::Controller control)
-    : control_(std::move(control)), x_d_(p1b::goal(0.0, p1b::initial_q()).x_d) {
-  info_.program = "hw2-p1";
-  info_.title = "hw2-p1: problem 1b on the PUMA 560, live";
-  info_.subtitle = kSubtitle;
-  info_.note = kNote;
-  for (const Part p : kLaws) info_.laws.push_back(p1b::describe(p));
-  info_.law = law_of(part);
+LabInfo page(const std::string& program, Part part) {
+  LabInfo info;
+  info.program = program;
+  info.title = program + ": problem 1b on the PUMA 560, live";
+  info.subtitle = kSubtitle;
+  info.note = kNote;
+  for (const Part p : kLaws) info.laws.push_back(p1b::describe(p));
+  info.law = law_of(part);
   const hw2::p1b::Goal g = p1b::goal(0.0, p1b::initial_q());
   // Ranges that keep the run stable: the tip PD is critically damped at kvx = 2 sqrt(kpx).
-  info_.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},
-                 {"kvx", "kv, tip (1/s)", 2.0, 60.0, g.kvx},
-                 {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
-  info_.plots = {{"tip error", "mm",
-                  {{"measured |x - x_d|", "#e74c3c"}, {"predicted |Jv A^-1 Je^T F| / kpx", "#e67e22"}}},
-                 {"joint 2", "rad", {{"q2", "#2c7be5"}, {"q2_d", "#7f8c8d"}}}};
-  info_.markers = {{"x_d", "target x_d", "#e74c3c", 0.02}, {"x", "tip x", "#2c7be5", 0.012}};
+  info.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},
+                {"kvx", "kv, tip (1/s)", 2.0, 60.0, g.kvx},
+                {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
+  info.plots = {{"tip error", "mm",
+                 {{"measured |x - x_d|", "#e74c3c"}, {"predicted |Jv A^-1 Je^T F| / kpx", "#e67e22"}}},
+                {"joint 2", "rad", {{"q2", "#2c7be5"}, {"q2_d", "#7f8c8d"}}}};
+  info.markers = {{"x_d", "target x_d", "#e74c3c", 0.02}, {"x", "tip x", "#2c7be5", 0.012}};
+  return info;
+}
+
+}  // namespace
+
+P1bLab::P1bLab(const std::string& program, Part part, p1b::Controller control)
+    : LoopLab(page(program, part), p1b::Scenario(kLaws[law_of(part)], std::move(control))) {
   reset();
 }
 
-std::unique_ptr<p1b::Loop> P1bLab::make_loop() const { return std::make_unique<p1b::Loop>(kLaws[info_.law], control_); }
-
-void P1bLab::set_law(int law) { loop_->part = kLaws[law]; }
+void P1bLab::set_law(int law) { loop_->scenario.part = kLaws[law]; }
 
 void P1bLab::set_push_torque(const Eigen::Ref<const Eigen::VectorXd>& torque) {
   if (torque.isZero(0.0)) {
@@ -72,13 +75,13 @@ void P1bLab::set_reference(double step, const std::function<std::vector<Eigen::V
 
 void P1bLab::plot_values(std::vector<double>& values) const {
   const p1b::Sample& s = result_.samples.back();
-  values = {1000.0 * (s.x - x_d_).norm(), 1000.0 * predicted_offset_.norm(), s.q(1), s.q2_desired};
+  const Eigen::Vector3d& x_d = loop_->scenario.x_d();
+  values = {1000.0 * (s.x - x_d).norm(), 1000.0 * predicted_offset_.norm(), s.q(1), s.q2_desired};
 }
 
 void P1bLab::marker_positions(std::vector<Eigen::Vector3d>& positions) const {
-  positions = {x_d_, result_.samples.empty() ? x_d_ : result_.samples.back().x};
+  const Eigen::Vector3d& x_d = loop_->scenario.x_d();
+  positions = {x_d, result_.samples.empty() ? x_d : result_.samples.back().x};
 }
-
-std::vector<double> P1bLab::csv_row() const { return p1b::csv_row(result_.samples.back(), x_d_); }
 
 }  // namespace opspace::live

@@ -3,27 +3,36 @@
 #include <cmath>
 
 #include "opspace/live/labs.hpp"
+#include "opspace/math/constants.hpp"
 
 namespace opspace::live {
 
 namespace p3 = scenarios::p3;
 
-P3Lab::P3Lab(p3::Controller control) : control_(std::move(control)) {
-  info_.program = "hw2-p3";
-  info_.title = "hw2-p3: problem 3, the iiwa pushing on a plane, live";
-  info_.subtitle = "pull the tool off the plane and let go: it comes back to 10 N";
-  info_.laws = {"unified motion and force control"};
+namespace {
+
+LabInfo page(const std::string& program) {
+  LabInfo info;
+  info.program = program;
+  info.title = program + ": problem 3, the iiwa pushing on a plane, live";
+  info.subtitle = "pull the tool off the plane and let go: it comes back to 10 N";
+  info.laws = {"unified motion and force control"};
   const hw2::p3::Goal g = p3::goal(0.0);
-  info_.gains = {{"kpx", "kp, motion (1/s^2)", 10.0, 200.0, g.kpx},
-                 {"kvx", "kv, motion (1/s)", 2.0, 60.0, g.kvx},
-                 {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
-  info_.plots = {{"contact force", "N", {{"F_x", "#95a5a6"}, {"F_x, 10 ms mean", "#e74c3c"}, {"F_d = 10 N", "#2c3e50"}}},
-                 {"tool tilt", "deg", {{"tilt", "#8e44ad"}}}};
-  info_.markers = {{"x_d", "target (y_d, z_d) on the plane", "#e74c3c", 0.02}, {"x", "link7 x_p", "#2c7be5", 0.012}};
-  reset();
+  info.gains = {{"kpx", "kp, motion (1/s^2)", 10.0, 200.0, g.kpx},
+                {"kvx", "kv, motion (1/s)", 2.0, 60.0, g.kvx},
+                {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
+  info.plots = {{"contact force", "N", {{"F_x", "#95a5a6"}, {"F_x, 10 ms mean", "#e74c3c"}, {"F_d = 10 N", "#2c3e50"}}},
+                {"tool tilt", "deg", {{"tilt", "#8e44ad"}}}};
+  info.markers = {{"x_d", "target (y_d, z_d) on the plane", "#e74c3c", 0.02}, {"x", "link7 x_p", "#2c7be5", 0.012}};
+  return info;
 }
 
-std::unique_ptr<p3::Loop> P3Lab::make_loop() const { return std::make_unique<p3::Loop>(control_); }
+}  // namespace
+
+P3Lab::P3Lab(const std::string& program, p3::Controller control)
+    : LoopLab(page(program), p3::Scenario(std::move(control))) {
+  reset();
+}
 
 void P3Lab::plot_values(std::vector<double>& values) const {
   // The mean of F_x over the last 10 samples (10 ms), as the grader's 10 ms bound reads it.
@@ -32,7 +41,7 @@ void P3Lab::plot_values(std::vector<double>& values) const {
   double sum = 0.0;
   for (std::size_t i = samples.size() - n; i < samples.size(); ++i) sum += samples[i].tool_force.x();
   const p3::Sample& s = samples.back();
-  values = {s.tool_force.x(), sum / static_cast<double>(n), p3::kPushForce, s.tilt * 180.0 / 3.14159265358979323846};
+  values = {s.tool_force.x(), sum / static_cast<double>(n), p3::kPushForce, s.tilt * 180.0 / kPi};
 }
 
 void P3Lab::marker_positions(std::vector<Eigen::Vector3d>& positions) const {

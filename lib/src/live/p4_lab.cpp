@@ -8,62 +8,65 @@ namespace opspace::live {
 namespace p4 = scenarios::p4;
 using hw2::p4::Target;
 
-P4Lab::P4Lab(Target target, p4::Controller control) : target_(target), control_(std::move(control)) {
-  info_.program = "hw2-p4";
-  info_.title = "hw2-p4: problem 4, the 3R arm " + p4::describe(target) + ", live";
-  info_.subtitle = "drag the arm into and out of the singularity; switch to the plain law and compare";
-  info_.laws = {"your controller (question v)", "the plain operational-space controller"};
+namespace {
+
+LabInfo page(const std::string& program, Target target) {
+  LabInfo info;
+  info.program = program;
+  info.title = program + ": problem 4, the 3R arm " + p4::describe(target) + ", live";
+  info.subtitle = "drag the arm into and out of the singularity; switch to the plain law and compare";
+  info.laws = {"your controller (question v)", "the plain operational-space controller"};
   const hw2::p4::Goal g = p4::goal(target);
-  info_.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},
-                 {"kvx", "kv, tip (1/s)", 2.0, 60.0, g.kvx},
-                 {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
-  info_.plots = {{"distance to the target", "mm", {{"|x - x_d|", "#e74c3c"}}},
-                 {"singular values of Jv", "m", {{"sigma1", "#2c7be5"}, {"sigma2", "#27ae60"}, {"sigma3", "#e67e22"}}}};
-  info_.markers = {{"x_d", "target x_d", "#e74c3c", 0.02}, {"x", "tip x", "#2c7be5", 0.012}};
+  info.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},
+                {"kvx", "kv, tip (1/s)", 2.0, 60.0, g.kvx},
+                {"kvj", "kv, joints (1/s)", 0.0, 60.0, g.kvj}};
+  info.plots = {{"distance to the target", "mm", {{"|x - x_d|", "#e74c3c"}}},
+                {"singular values of Jv", "m", {{"sigma1", "#2c7be5"}, {"sigma2", "#27ae60"}, {"sigma3", "#e67e22"}}}};
+  info.markers = {{"x_d", "target x_d", "#e74c3c", 0.02}, {"x", "tip x", "#2c7be5", 0.012}};
+  return info;
+}
+
+}  // namespace
+
+P4Lab::P4Lab(const std::string& program, Target target, p4::Controller control)
+    : LoopLab(page(program, target), p4::Scenario(target, nullptr, "")), target_(target), control_(std::move(control)) {
   reset();
 }
 
 void P4Lab::reset() {
   plain_ = info_.law == 1;
   LoopLab::reset();
+  use_law(loop_->scenario);
 }
 
-void P4Lab::use_law(p4::Loop& loop) const {
+void P4Lab::use_law(p4::Scenario& scenario) const {
   if (plain_) {
-    loop.law = &p4::plain_control;
-    loop.who = "the plain controller";
+    scenario.law = &p4::plain_control;
+    scenario.who = "the plain controller";
     return;
   }
   const p4::Controller control = control_;
   const Target target = target_;
-  loop.law = [control, target](const hw2::p4::State& s, const TaskSpace&, const hw2::p4::Goal& g) {
+  scenario.law = [control, target](const hw2::p4::State& s, const TaskSpace&, const hw2::p4::Goal& g) {
     return control(target, s, g);
   };
-  loop.who = "your controller " + p4::describe(target_);
-}
-
-std::unique_ptr<p4::Loop> P4Lab::make_loop() const {
-  auto loop = std::make_unique<p4::Loop>(target_, nullptr, "");
-  use_law(*loop);
-  return loop;
+  scenario.who = "your controller " + p4::describe(target_);
 }
 
 void P4Lab::set_law(int law) {
   plain_ = law == 1;
-  use_law(*loop_);  // on the running loop: no new world is built
+  use_law(loop_->scenario);  // on the running loop: no new world is built
 }
 
 void P4Lab::plot_values(std::vector<double>& values) const {
   const p4::Sample& s = result_.samples.back();
   const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(loop_->state().Jv).singularValues();
-  values = {1000.0 * (s.x - loop_->goal().x_d).norm(), sigma(0), sigma(1), sigma(2)};
+  values = {1000.0 * (s.x - loop_->scenario.goal().x_d).norm(), sigma(0), sigma(1), sigma(2)};
 }
 
 void P4Lab::marker_positions(std::vector<Eigen::Vector3d>& positions) const {
-  const Eigen::Vector3d& x_d = loop_->goal().x_d;
+  const Eigen::Vector3d& x_d = loop_->scenario.goal().x_d;
   positions = {x_d, result_.samples.empty() ? x_d : result_.samples.back().x};
 }
-
-std::vector<double> P4Lab::csv_row() const { return p4::csv_row(result_.samples.back(), loop_->goal().x_d); }
 
 }  // namespace opspace::live

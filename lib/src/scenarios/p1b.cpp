@@ -4,16 +4,14 @@
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/scenarios.hpp"
-#include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
 #include "observe.hpp"
 
 namespace opspace::scenarios::p1b {
 
-namespace {
-
-void summarise(Result& result, const Eigen::Vector3d& x_d) {
+void Scenario::summarise(Result& result, const Model&, const Simulation&) const {
+  const Eigen::Vector3d& x_d = x_d_;
   Summary& s = result.summary;
   double tip_sq = 0.0, q2_sq = 0.0;
   long n = 0;
@@ -39,15 +37,14 @@ void summarise(Result& result, const Eigen::Vector3d& x_d) {
   }
 }
 
-}  // namespace
-
-std::vector<std::string> csv_columns() {
+std::vector<std::string> Scenario::csv_columns() {
   return {"t",    "x",    "y",    "z",    "x_d",  "y_d",  "z_d",  "tip_error", "q1",   "q2",
           "q3",   "q4",   "q5",   "q6",   "q2_d", "tau1", "tau2", "tau3",      "tau4", "tau5",
           "tau6"};
 }
 
-std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d) {
+std::vector<double> Scenario::csv_row(const Sample& s) const {
+  const Eigen::Vector3d& x_d = x_d_;
   std::vector<double> row = {s.t, s.x(0), s.x(1), s.x(2), x_d(0), x_d(1), x_d(2), (s.x - x_d).norm()};
   for (int i = 0; i < 6; ++i) row.push_back(s.q(i));
   row.push_back(s.q2_desired);
@@ -61,7 +58,9 @@ std::string who(hw2::p1b::Part part) {
   return "your " + describe(part).substr(0, describe(part).find(':')) + " controller";
 }
 
-SimulationSettings settings() {
+}  // namespace
+
+SimulationSettings Scenario::settings() {
   // PART2's law spins the light wrist (its links weigh 0.1-0.8 kg and the model, like Bullet,
   // has no motor inertia) to a few hundred rad/s: that wild motion is the lesson, so the run
   // must not stop below kMaxJointSpeed.
@@ -69,8 +68,6 @@ SimulationSettings settings() {
   settings.max_joint_speed = kMaxJointSpeed;
   return settings;
 }
-
-}  // namespace
 
 Eigen::Vector3d tip_point() { return Eigen::Vector3d(-0.2, 0.0, 0.0); }
 
@@ -117,34 +114,29 @@ std::string describe(hw2::p1b::Part part) {
   return "unknown part";
 }
 
-Loop::Loop(hw2::p1b::Part law, Controller control)
-    : part(law), model_(load_urdf(robot_path(kRobotFile))), observer_(model_), sim_(model_, settings()),
-      control_(std::move(control)), named_part_(law), who_(who(law)) {
-  sim_.set_state(initial_q(), Vector6d::Zero());
-}
+Scenario::Scenario(hw2::p1b::Part law, Controller control)
+    : part(law), control_(std::move(control)), x_d_(goal(0.0, initial_q()).x_d), named_part_(law), who_(who(law)) {}
 
-Sample Loop::tick() {
-  const double t = sim_.time();
-  state_ = &observer_.observe(t, sim_.q(), sim_.qdot());
-  hw2::p1b::Goal g = goal(t, state_->q);
+void Scenario::start(Simulation& sim) const { sim.set_state(initial_q(), Vector6d::Zero()); }
+
+Sample Scenario::tick(Observer& observer, Simulation& sim, const GainOverrides& gains) {
+  const double t = sim.time();
+  const hw2::p1b::State& state = observer.observe(t, sim.q(), sim.qdot());
+  hw2::p1b::Goal g = goal(t, state.q);
   gains.apply(g);
-  const Vector6d tau = control_(part, *state_, g);
+  const Vector6d tau = control_(part, state, g);
   if (part != named_part_) {  // the live lab switched laws
     named_part_ = part;
     who_ = who(part);
   }
   check_torque(tau, 6, t, who_);
-  return Sample{t, state_->x, state_->q, g.q_d(1), tau};
+  return Sample{t, state.x, state.q, g.q_d(1), tau};
 }
 
+std::string Scenario::what() const { return "problem 1b, " + describe(part); }
+
 Result run(hw2::p1b::Part part, Controller control, const RunOptions& options) {
-  Loop loop(part, std::move(control));
-  const Eigen::Vector3d x_d = goal(0.0, initial_q()).x_d;
-  Result result = run_closed_loop<Result>(
-      loop.simulation(), "hw2-p1", "problem 1b, " + describe(part), csv_columns(), options,
-      [&](double) { return loop.tick(); }, [&](const Sample& s) { return csv_row(s, x_d); });
-  summarise(result, x_d);
-  return result;
+  return scenarios::run(Scenario(part, std::move(control)), options);
 }
 
 }  // namespace opspace::scenarios::p1b

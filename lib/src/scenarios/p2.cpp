@@ -7,16 +7,14 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/euler_params.hpp"
 #include "opspace/scenarios.hpp"
-#include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
 #include "observe.hpp"
 
 namespace opspace::scenarios::p2 {
 
-namespace {
-
-void summarise(Result& result, const Model& iiwa, double dt) {
+void Scenario::summarise(Result& result, const Model& iiwa, const Simulation& sim) const {
+  const double dt = sim.settings().dt;
   Summary& s = result.summary;
   double position_sq = 0.0, orientation_sq = 0.0;
   long n = 0;
@@ -63,16 +61,14 @@ void summarise(Result& result, const Model& iiwa, double dt) {
   }
 }
 
-}  // namespace
-
-std::vector<std::string> csv_columns() {
+std::vector<std::string> Scenario::csv_columns() {
   return {"t",    "x",    "y",    "z",    "l0",   "l1",   "l2",   "l3",   "x_d",  "y_d",
           "z_d",  "l0_d", "l1_d", "l2_d", "l3_d", "position_error", "orientation_error",
           "q1",   "q2",   "q3",   "q4",   "q5",   "q6",   "q7",   "tau1", "tau2", "tau3",
           "tau4", "tau5", "tau6", "tau7"};
 }
 
-std::vector<double> csv_row(const Sample& s) {
+std::vector<double> Scenario::csv_row(const Sample& s) const {
   std::vector<double> row = {s.t};
   for (int i = 0; i < 3; ++i) row.push_back(s.x_p(i));
   for (int i = 0; i < 4; ++i) row.push_back(s.lambda(i));
@@ -144,35 +140,26 @@ const hw2::p2::State& Observer::observe(double t, const Eigen::Ref<const Eigen::
   return s;
 }
 
-Loop::Loop(Controller control, DesiredAcceleration desired_acceleration)
-    : model_(load_urdf(robot_path(kRobotFile))), observer_(model_), sim_(model_), control_(std::move(control)),
-      desired_acceleration_(std::move(desired_acceleration)) {
-  sim_.set_state(initial_q(), Vector7d::Zero());
-}
+void Scenario::start(Simulation& sim) const { sim.set_state(initial_q(), Vector7d::Zero()); }
 
-Sample Loop::tick() {
-  const double t = sim_.time();
+Sample Scenario::tick(Observer& observer, Simulation& sim, const GainOverrides& gains) const {
+  const double t = sim.time();
   hw2::p2::Goal g = goal(t);
   gains.apply(g);
-  g.xddot_d = desired_acceleration_(t);
+  g.xddot_d = desired_acceleration(t);
   if (!g.xddot_d.allFinite()) {
     throw ControllerError("your desired_acceleration (2a) returned a value that is not finite at t = " +
                               std::to_string(t) + " s",
                           t);
   }
-  const hw2::p2::State& state = observer_.observe(t, sim_.q(), sim_.qdot(), g.x_d.tail<4>());
-  const Vector7d tau = control_(state, g);
+  const hw2::p2::State& state = observer.observe(t, sim.q(), sim.qdot(), g.x_d.tail<4>());
+  const Vector7d tau = control(state, g);
   check_torque(tau, 7, t, "your controller");
   return Sample{t, state.x_p, state.lambda, g.x_d, state.q, tau};
 }
 
 Result run(Controller control, DesiredAcceleration desired_acceleration, const RunOptions& options) {
-  Loop loop(std::move(control), std::move(desired_acceleration));
-  Result result = run_closed_loop<Result>(
-      loop.simulation(), "hw2-p2", "problem 2", csv_columns(), options, [&](double) { return loop.tick(); },
-      &csv_row);
-  summarise(result, loop.model(), loop.simulation().settings().dt);
-  return result;
+  return scenarios::run(Scenario{std::move(control), std::move(desired_acceleration)}, options);
 }
 
 }  // namespace opspace::scenarios::p2

@@ -6,7 +6,6 @@
 #include "opspace/algorithms/euler_params.hpp"
 #include "opspace/algorithms/linalg.hpp"
 #include "opspace/scenarios.hpp"
-#include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
 
@@ -14,13 +13,13 @@ namespace opspace::scenarios::p3 {
 
 namespace {
 
-
-
 // A push this small is no contact: Bullet reports impulses, a touching contact at rest carries
 // the arm's weight share (newtons); 1e-6 N is rounding.
 constexpr double kTouching = 1e-6;
 
-void summarise(Result& result) {
+}  // namespace
+
+void Scenario::summarise(Result& result, const Model&, const Simulation&) const {
   Summary& s = result.summary;
   double force_error_sum = 0.0, force_sum = 0.0, yz_sq = 0.0, rx_sq = 0.0, tilt_sq = 0.0;
   long n = 0;
@@ -78,9 +77,7 @@ void summarise(Result& result) {
   }
 }
 
-}  // namespace
-
-std::vector<std::string> csv_columns() {
+std::vector<std::string> Scenario::csv_columns() {
   return {"t",       "x",        "y",        "z",        "l0",       "l1",       "l2",
           "l3",      "y_d",      "z_d",      "l0_d",     "l1_d",     "l2_d",     "l3_d",
           "Fx",      "Fy",       "Fz",       "Mx",       "My",       "Mz",       "contact_points",
@@ -89,7 +86,7 @@ std::vector<std::string> csv_columns() {
           "tau5",    "tau6",     "tau7"};
 }
 
-std::vector<double> csv_row(const Sample& s) {
+std::vector<double> Scenario::csv_row(const Sample& s) const {
   std::vector<double> row = {s.t};
   for (int i = 0; i < 3; ++i) row.push_back(s.x_p(i));
   for (int i = 0; i < 4; ++i) row.push_back(s.lambda(i));
@@ -138,19 +135,18 @@ hw2::p3::Goal goal(double t) {
   return g;
 }
 
-Loop::Loop(Controller control)
-    : model_(load_urdf(robot_path(kRobotFile))), observer_(model_), sim_(model_), control_(std::move(control)) {
+void Scenario::start(Simulation& sim) {
   // The half-space x >= 0.05, i.e. -x <= -0.05: its surface faces the robot (normal -x).
-  sim_.add_plane(-Eigen::Vector3d::UnitX(), -kPlaneX, Material{0.0, 0.0});
-  sim_.set_state(initial_q(), Vector7d::Zero());
-  tool_body_ = sim_.link_body(kTipLink);
+  sim.add_plane(-Eigen::Vector3d::UnitX(), -kPlaneX, Material{0.0, 0.0});
+  sim.set_state(initial_q(), Vector7d::Zero());
+  tool_body_ = sim.link_body(kTipLink);
 }
 
-Sample Loop::tick() {
-  const double t = sim_.time();
+Sample Scenario::tick(Observer& observer, Simulation& sim, const GainOverrides& gains) const {
+  const double t = sim.time();
   hw2::p3::Goal g = goal(t);
   gains.apply(g);
-  const hw2::p3::State& state = observer_.observe(t, sim_.q(), sim_.qdot(), g.x_d.tail<4>());
+  const hw2::p3::State& state = observer.observe(t, sim.q(), sim.qdot(), g.x_d.tail<4>());
   const Vector7d tau = control_(state, g);
   check_torque(tau, 7, t, "your controller");
   Sample sample;
@@ -158,10 +154,10 @@ Sample Loop::tick() {
   sample.x_p = state.x_p;
   sample.lambda = state.lambda;
   sample.x_d = g.x_d;
-  const Wrench& w = sim_.contact_wrench(tool_body_);
+  const Wrench& w = sim.contact_wrench(tool_body_);
   sample.tool_force = -w.force;
   sample.tool_moment = -w.moment;
-  for (const Contact& c : sim_.contacts()) sample.contact_points += c.body == tool_body_ ? 1 : 0;
+  for (const Contact& c : sim.contacts()) sample.contact_points += c.body == tool_body_ ? 1 : 0;
   const Eigen::Vector3d tool_axis = rotation_matrix(state.lambda).col(2);
   sample.tilt = std::atan2(tool_axis.cross(Eigen::Vector3d::UnitX()).norm(), tool_axis.x());
   sample.rotation_x_error = orientation_error(state.lambda, g.x_d.tail<4>()).x();
@@ -171,11 +167,7 @@ Sample Loop::tick() {
 }
 
 Result run(Controller control, const RunOptions& options) {
-  Loop loop(std::move(control));
-  Result result = run_closed_loop<Result>(loop.simulation(), "hw2-p3", "problem 3", csv_columns(), options,
-                                          [&](double) { return loop.tick(); }, &csv_row);
-  summarise(result);
-  return result;
+  return scenarios::run(Scenario(std::move(control)), options);
 }
 
 }  // namespace opspace::scenarios::p3

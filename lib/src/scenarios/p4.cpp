@@ -4,7 +4,6 @@
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/scenarios.hpp"
-#include "opspace/scenarios/closed_loop_run.hpp"
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/algorithms/singularity.hpp"
 #include "opspace/model/urdf.hpp"
@@ -12,9 +11,8 @@
 
 namespace opspace::scenarios::p4 {
 
-namespace {
-
-void summarise(Result& result, const Eigen::Vector3d& x_d) {
+void Scenario::summarise(Result& result, const Model&, const Simulation&) const {
+  const Eigen::Vector3d& x_d = goal_.x_d;
   Summary& s = result.summary;
   if (result.samples.empty()) return;
   for (const Sample& sample : result.samples) {
@@ -35,13 +33,12 @@ void summarise(Result& result, const Eigen::Vector3d& x_d) {
   if (!result.failure.empty()) s.reach_time = -1.0;
 }
 
-}  // namespace
-
-std::vector<std::string> csv_columns() {
+std::vector<std::string> Scenario::csv_columns() {
   return {"t", "x", "y", "z", "x_d", "y_d", "z_d", "error", "q1", "q2", "q3", "tau1", "tau2", "tau3"};
 }
 
-std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d) {
+std::vector<double> Scenario::csv_row(const Sample& s) const {
+  const Eigen::Vector3d& x_d = goal_.x_d;
   return {s.t,      s.x(0),   s.x(1),   s.x(2),     x_d(0),     x_d(1),     x_d(2),
           (s.x - x_d).norm(), s.q(0), s.q(1), s.q(2), s.tau(0), s.tau(1), s.tau(2)};
 }
@@ -118,45 +115,35 @@ std::string describe(Target target) {
   return target == Target::kAlongZ0 ? "along Z0 (elbow lock)" : "along Y0 (overhead lock)";
 }
 
-Loop::Loop(Target target, Law l, std::string name)
-    : law(std::move(l)), who(std::move(name)), model_(load_urdf(robot_path(kRobotFile))), observer_(model_),
-      sim_(model_), goal_(p4::goal(target)) {
-  sim_.set_state(initial_q(target), Eigen::Vector3d::Zero());
-}
+Scenario::Scenario(Target target, Law l, std::string name)
+    : law(std::move(l)), who(std::move(name)), target_(target), goal_(p4::goal(target)) {}
 
-Sample Loop::tick() {
-  const double t = sim_.time();
-  state_ = &observer_.observe(t, sim_.q(), sim_.qdot());
+void Scenario::start(Simulation& sim) const { sim.set_state(initial_q(target_), Eigen::Vector3d::Zero()); }
+
+Sample Scenario::tick(Observer& observer, Simulation& sim, const GainOverrides& gains) const {
+  const double t = sim.time();
+  const hw2::p4::State& state = observer.observe(t, sim.q(), sim.qdot());
   hw2::p4::Goal g = goal_;
   gains.apply(g);
-  const Eigen::Vector3d tau = law(*state_, observer_.exact(), g);
+  const Eigen::Vector3d tau = law(state, observer.exact(), g);
   check_torque(tau, 3, t, who);
-  return Sample{t, state_->x, state_->q, tau};
+  return Sample{t, state.x, state.q, tau};
 }
 
-namespace {
-
-Result simulate(Target target, const std::string& who, Law law, const RunOptions& options) {
-  Loop loop(target, std::move(law), who);
-  const Eigen::Vector3d x_d = loop.goal().x_d;
-  Result result = run_closed_loop<Result>(
-      loop.simulation(), "hw2-p4", "problem 4, question v " + describe(target) + ", " + who, csv_columns(), options,
-      [&](double) { return loop.tick(); }, [&](const Sample& s) { return csv_row(s, x_d); });
-  summarise(result, x_d);
-  return result;
-}
-
-}  // namespace
+std::string Scenario::what() const { return "problem 4, question v " + describe(target_) + ", " + who; }
 
 Result run(Target target, Controller control, const RunOptions& options) {
-  return simulate(
-      target, "your controller " + describe(target),
-      [control, target](const hw2::p4::State& s, const TaskSpace&, const hw2::p4::Goal& g) { return control(target, s, g); },
+  return scenarios::run(
+      Scenario(target,
+               [control, target](const hw2::p4::State& s, const TaskSpace&, const hw2::p4::Goal& g) {
+                 return control(target, s, g);
+               },
+               "your controller " + describe(target)),
       options);
 }
 
 Result run_plain(Target target, const RunOptions& options) {
-  return simulate(target, "the plain controller", &plain_control, options);
+  return scenarios::run(Scenario(target, &plain_control, "the plain controller"), options);
 }
 
 }  // namespace opspace::scenarios::p4

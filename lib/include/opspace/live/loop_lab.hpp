@@ -1,22 +1,31 @@
 /// @file live/loop_lab.hpp
-/// What the four problems' Labs share: a scenario's Loop (scenarios/p*.hpp), rebuilt by each
-/// reset, whose ticks are kept as the run's Result for its plots and replay page.
+/// The one Lab over any problem's scenario (scenarios/loop.hpp): its Loop, rebuilt from the
+/// scenario's start by each reset, whose ticks are kept as the run's Result for its plots and
+/// replay page. A problem's lab (live/labs.hpp) adds only its own: what the page plots and
+/// marks, the laws it switches, what it predicts of a push.
 #pragma once
 
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "opspace/live/lab.hpp"
+#include "opspace/scenarios/loop.hpp"
 
 namespace opspace::live {
 
-/// A Lab over a scenario's `Loop` (tick(), simulation(), gains) recording a `Result`.
-template <class Loop, class Result>
+/// A Lab over scenarios::Loop<Scenario>, recording its ResultOf<Scenario>.
+template <class Scenario>
 class LoopLab : public Lab {
  public:
+  using Loop = scenarios::Loop<Scenario>;
+  using Result = scenarios::ResultOf<Scenario>;
+
   const LabInfo& info() const override { return info_; }
+  /// A new Loop from the scenario's start; the gains back to the goal's.
   void reset() override {
-    loop_ = make_loop();
+    loop_ = std::make_unique<Loop>(start_);
     result_ = Result{};
   }
   Simulation& simulation() override { return loop_->simulation(); }
@@ -32,18 +41,22 @@ class LoopLab : public Lab {
     tau_ = result_.samples.back().tau;
     return tau_;
   }
+  std::vector<std::string> csv_columns() const override { return loop_->scenario.csv_columns(); }
+  std::vector<double> csv_row() const override { return loop_->scenario.csv_row(result_.samples.back()); }
   /// The samples of the current run (since the last reset): its plots and replay page.
   const Result& result() const { return result_; }
 
  protected:
-  /// The scenario's loop at its start, with the law in force.
-  virtual std::unique_ptr<Loop> make_loop() const = 0;
+  /// What the page shows, and the scenario every reset starts from; the problem's constructor
+  /// then calls reset().
+  LoopLab(LabInfo info, Scenario start) : info_(std::move(info)), start_(std::move(start)) {}
 
-  LabInfo info_;               ///< set by the problem's constructor, which then calls reset()
+  LabInfo info_;                ///< what the page shows
   std::unique_ptr<Loop> loop_;  ///< the current run
   Result result_;               ///< its samples
 
  private:
+  Scenario start_;
   Eigen::VectorXd tau_;
 };
 

@@ -15,6 +15,7 @@ struct RunOptions {
   double duration = 20.0;                ///< simulated seconds
   std::string csv_path;                  ///< empty: no CSV log
   std::ostream* progress = nullptr;      ///< null: silent
+  std::string label = "run";             ///< what the progress lines start with (the program's name)
   /// Wall-clock seconds one step (the controller's tick and the simulation's step) may take
   /// before a Watchdog (scenarios/watchdog.hpp) stops the program; 0: no watchdog.
   double watchdog = 0.0;

@@ -14,6 +14,7 @@
 #include "opspace/model/model.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
+#include "opspace/scenarios/loop.hpp"
 #include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
@@ -74,6 +75,7 @@ class Observer {
   /// The State at time t: tip x, dx, Jv, A, g, Lambda_v, Jbar_v, p at (q, dq).
   const hw2::p1b::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                                  const Eigen::Ref<const Eigen::VectorXd>& dq);
+  const hw2::p1b::State& state() const { return state_; }  ///< the last observe()'s State
 
  private:
   const Model& model_;
@@ -110,34 +112,40 @@ struct Summary {
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
-/// Problem 1b's closed loop one tick at a time, shared by run() and the live lab: the PUMA,
-/// its Observer and its simulation at q(0), at rest, t = 0.
-class Loop {
+/// Problem 1b's scenario for the one closed loop (scenarios/loop.hpp): the PUMA from q(0) at
+/// rest, each tick tau = control(part, State, goal(t, q)), its torques checked.
+class Scenario {
  public:
-  /// Loads puma.urdf and builds the simulation; `control` applies law `part`.
-  Loop(hw2::p1b::Part part, Controller control);
-  /// Observes the State at the simulation's time, asks the controller and checks its torques
-  /// (ControllerError names `part`): the Sample of that instant, with the torques to apply.
-  Sample tick();
-  Simulation& simulation() { return sim_; }  ///< the simulated PUMA
-  const Model& model() const { return model_; }  ///< the controller's model of it
-  const hw2::p1b::State& state() const { return *state_; }  ///< the last tick's State
-  hw2::p1b::Part part;      ///< the law control() applies from the next tick
-  GainOverrides gains;      ///< live changes to goal()'s gains
+  using Observer = p1b::Observer;
+  using Sample = p1b::Sample;
+  using Summary = p1b::Summary;
+  static constexpr const char* kRobotFile = p1b::kRobotFile;
+  /// Speeds up to kMaxJointSpeed: PART2's wild wrist is the lesson, not a stop.
+  static SimulationSettings settings();
+
+  /// `control` applies law `part`.
+  Scenario(hw2::p1b::Part part, Controller control);
+  void start(Simulation& sim) const;  ///< q(0) = initial_q(), at rest
+  /// State, goal(t, q) with `gains`, tau = control(part, ...) checked (ControllerError names part).
+  Sample tick(Observer& observer, Simulation& sim, const GainOverrides& gains);
+  std::string what() const;  ///< "problem 1b, PART3: ..."
+  static std::vector<std::string> csv_columns();
+  std::vector<double> csv_row(const Sample& s) const;  ///< see csv_columns(); x_d the fixed target
+  /// Errors after kSettleTime against x_d, peak torque.
+  void summarise(RunResult<Sample, Summary>& result, const Model& model, const Simulation& sim) const;
+  const Eigen::Vector3d& x_d() const { return x_d_; }  ///< the tip's fixed target
+
+  hw2::p1b::Part part;  ///< the law control() applies from the next tick (the live lab switches it)
 
  private:
-  Model model_;
-  Observer observer_;
-  Simulation sim_;
   Controller control_;
-  const hw2::p1b::State* state_ = nullptr;
+  Eigen::Vector3d x_d_;
   hw2::p1b::Part named_part_;  // the part `who_` names ("your PART3 controller")
   std::string who_;
 };
 
-/// The CSV log's columns, and one Sample's row (x_d: the tip's target).
-std::vector<std::string> csv_columns();
-std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d);
+/// Problem 1b's closed loop one tick at a time, shared by run() and the live lab.
+using Loop = scenarios::Loop<Scenario>;
 
 /// Runs problem 1b's scenario with `control` applying law `part` every 1 ms step.
 Result run(hw2::p1b::Part part, Controller control, const RunOptions& options);

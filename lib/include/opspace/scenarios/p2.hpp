@@ -15,6 +15,7 @@
 #include "opspace/model/model.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
+#include "opspace/scenarios/loop.hpp"
 #include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
@@ -92,6 +93,7 @@ class Observer {
   const hw2::p2::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
                                 const Eigen::Ref<const Eigen::VectorXd>& dq,
                                 const Eigen::Ref<const Eigen::Vector4d>& lambda_side);
+  const hw2::p2::State& state() const { return state_; }  ///< the last observe()'s State
 
  private:
   const Model& model_;
@@ -142,29 +144,31 @@ struct Summary {
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
-/// Problem 2's closed loop one tick at a time, shared by run() and the live lab: the iiwa, its
-/// Observer and its simulation at initial_q(), at rest, t = 0.
-class Loop {
- public:
-  /// Loads iiwa7.urdf and builds the simulation.
-  Loop(Controller control, DesiredAcceleration desired_acceleration);
-  /// The State at the simulation's time, the controller's torques (checked): that instant's Sample.
-  Sample tick();
-  Simulation& simulation() { return sim_; }      ///< the simulated iiwa
-  const Model& model() const { return model_; }  ///< the controller's model of it
-  GainOverrides gains;                           ///< live changes to goal()'s gains
+/// Problem 2's scenario for the one closed loop (scenarios/loop.hpp): the iiwa from
+/// initial_q() at rest, each tick goal.xddot_d = desired_acceleration(t) (checked finite), then
+/// tau = control(State, goal) checked.
+struct Scenario {
+  using Observer = p2::Observer;
+  using Sample = p2::Sample;
+  using Summary = p2::Summary;
+  static constexpr const char* kRobotFile = p2::kRobotFile;
+  static SimulationSettings settings() { return {}; }  ///< the default settings
 
- private:
-  Model model_;
-  Observer observer_;
-  Simulation sim_;
-  Controller control_;
-  DesiredAcceleration desired_acceleration_;
+  Controller control;                        ///< the student's 2(b)
+  DesiredAcceleration desired_acceleration;  ///< the student's 2(a)
+
+  void start(Simulation& sim) const;  ///< q(0) = initial_q(), at rest
+  /// goal(t) with `gains` and xddot_d, the State (lambda on lambda_d's side), tau checked.
+  Sample tick(Observer& observer, Simulation& sim, const GainOverrides& gains) const;
+  std::string what() const { return "problem 2"; }
+  static std::vector<std::string> csv_columns();
+  std::vector<double> csv_row(const Sample& s) const;  ///< see csv_columns()
+  /// Tracking errors after kSettleTime, lambda's checks, joint limits of `iiwa`, drift per period.
+  void summarise(RunResult<Sample, Summary>& result, const Model& iiwa, const Simulation& sim) const;
 };
 
-/// The CSV log's columns, and one Sample's row.
-std::vector<std::string> csv_columns();
-std::vector<double> csv_row(const Sample& s);  ///< see csv_columns()
+/// Problem 2's closed loop one tick at a time, shared by run() and the live lab.
+using Loop = scenarios::Loop<Scenario>;
 
 /// Runs problem 2's scenario: every 1 ms step, goal.xddot_d = desired_acceleration(t), then
 /// tau = control(state, goal).

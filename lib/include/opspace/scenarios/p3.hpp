@@ -129,30 +129,34 @@ struct Summary {
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 
-/// Problem 3's closed loop one tick at a time, shared by run() and the live lab: the iiwa, the
-/// plane x = kPlaneX and the simulation at initial_q(), at rest, t = 0.
-class Loop {
+/// Problem 3's scenario for the one closed loop (scenarios/loop.hpp): the iiwa from
+/// initial_q() at rest against the plane x = kPlaneX (frictionless, plastic), each tick
+/// tau = control(State, goal(t)) checked, and the tool's contact with the plane recorded.
+class Scenario {
  public:
-  /// Loads iiwa7.urdf and builds the simulation with its plane.
-  explicit Loop(Controller control);
-  /// The State at the simulation's time, the controller's torques (checked), the tool's
-  /// contact force: that instant's Sample.
-  Sample tick();
-  Simulation& simulation() { return sim_; }      ///< the simulated iiwa and its plane
-  const Model& model() const { return model_; }  ///< the controller's model of the iiwa
-  GainOverrides gains;                           ///< live changes to goal()'s gains
+  using Observer = p3::Observer;
+  using Sample = p3::Sample;
+  using Summary = p3::Summary;
+  static constexpr const char* kRobotFile = p3::kRobotFile;
+  static SimulationSettings settings() { return {}; }  ///< the default settings
+
+  explicit Scenario(Controller control) : control_(std::move(control)) {}
+  void start(Simulation& sim);  ///< the plane, q(0) = initial_q() at rest, the tool's body
+  /// goal(t) with `gains`, the State, tau checked, the contact of the step that led to t.
+  Sample tick(Observer& observer, Simulation& sim, const GainOverrides& gains) const;
+  std::string what() const { return "problem 3"; }
+  static std::vector<std::string> csv_columns();
+  std::vector<double> csv_row(const Sample& s) const;  ///< see csv_columns()
+  /// Contact, force, tracking and tilt after kSettleTime, peak torque.
+  void summarise(RunResult<Sample, Summary>& result, const Model& iiwa, const Simulation& sim) const;
 
  private:
-  Model model_;
-  Observer observer_;
-  Simulation sim_;
   Controller control_;
-  int tool_body_;
+  int tool_body_ = -1;
 };
 
-/// The CSV log's columns, and one Sample's row.
-std::vector<std::string> csv_columns();
-std::vector<double> csv_row(const Sample& s);  ///< see csv_columns()
+/// Problem 3's closed loop one tick at a time, shared by run() and the live lab.
+using Loop = scenarios::Loop<Scenario>;
 
 /// Runs problem 3's scenario: the plane at x = 0.05, then every 1 ms step
 /// tau = control(state, goal(t)).

@@ -14,6 +14,7 @@
 #include "opspace/model/model.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
+#include "opspace/scenarios/loop.hpp"
 #include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
@@ -76,6 +77,7 @@ class Observer {
                                 const Eigen::Ref<const Eigen::VectorXd>& dq);
   /// Lambda, Jbar, N, p of the last observe() with the default (tiny) tolerance.
   const TaskSpace& exact() const { return exact_; }
+  const hw2::p4::State& state() const { return state_; }  ///< the last observe()'s State
 
  private:
   const Model& model_;
@@ -119,33 +121,41 @@ Result run(Target target, Controller control, const RunOptions& options);
 /// A law of question v's run: the State, the exact (not damped) task-space matrices, the Goal.
 using Law = std::function<Eigen::Vector3d(const hw2::p4::State&, const TaskSpace&, const hw2::p4::Goal&)>;
 
-/// Question v's closed loop one tick at a time, shared by run(), run_plain() and the live lab:
-/// the 3R arm at initial_q(target), at rest, t = 0, driven by `law`.
-class Loop {
+/// Question v's scenario for the one closed loop (scenarios/loop.hpp): the 3R arm from
+/// initial_q(target) at rest, each tick tau = law(State, exact task quantities, goal(target))
+/// checked.
+class Scenario {
  public:
-  /// Loads rrr.urdf and builds the simulation; `who` names the law in errors ("your controller").
-  Loop(Target target, Law law, std::string who);
-  /// The State at the simulation's time, the law's torques (checked): that instant's Sample.
-  Sample tick();
-  Simulation& simulation() { return sim_; }      ///< the simulated arm
-  const Model& model() const { return model_; }  ///< the controller's model of it
-  const hw2::p4::State& state() const { return *state_; }  ///< the last tick's State
-  const hw2::p4::Goal& goal() const { return goal_; }       ///< question v's goal for the target
-  Law law;              ///< applied from the next tick
-  std::string who;      ///< names the law in errors
-  GainOverrides gains;  ///< live changes to the goal's gains
+  using Observer = p4::Observer;
+  using Sample = p4::Sample;
+  using Summary = p4::Summary;
+  static constexpr const char* kRobotFile = p4::kRobotFile;
+  static SimulationSettings settings() { return {}; }  ///< the default settings
+
+  /// `who` names the law in errors ("your controller").
+  Scenario(Target target, Law law, std::string who);
+  void start(Simulation& sim) const;  ///< q(0) = initial_q(target), at rest
+  /// The State, the goal with `gains`, tau = law(...) checked.
+  Sample tick(Observer& observer, Simulation& sim, const GainOverrides& gains) const;
+  std::string what() const;  ///< "problem 4, question v along Z0 (elbow lock), your controller ..."
+  static std::vector<std::string> csv_columns();
+  std::vector<double> csv_row(const Sample& s) const;  ///< see csv_columns()
+  /// Final error, reach time (kReachTolerance), peak torque.
+  void summarise(RunResult<Sample, Summary>& result, const Model& rrr, const Simulation& sim) const;
+  Target target() const { return target_; }              ///< where the tip goes
+  const hw2::p4::Goal& goal() const { return goal_; }    ///< question v's goal for the target
+
+  Law law;          ///< applied from the next tick (the live lab switches it)
+  std::string who;  ///< names the law in errors
 
  private:
-  Model model_;
-  Observer observer_;
-  Simulation sim_;
+  Target target_;
   hw2::p4::Goal goal_;
-  const hw2::p4::State* state_ = nullptr;
 };
 
-/// The CSV log's columns, and one Sample's row (x_d: the tip's target).
-std::vector<std::string> csv_columns();
-std::vector<double> csv_row(const Sample& s, const Eigen::Vector3d& x_d);  ///< see csv_columns()
+/// Question v's closed loop one tick at a time, shared by run(), run_plain() and the live lab.
+using Loop = scenarios::Loop<Scenario>;
+
 /// The same from the same start with plain_control().
 Result run_plain(Target target, const RunOptions& options);
 
