@@ -14,15 +14,11 @@
 
 namespace cli {
 
-namespace {
-
-/// Prints "program: message" on stderr and returns 2, the exit code of a bad argument.
-int bad(const char* program, const std::string& message) {
+int refuse(const char* program, const std::string& message) {
   std::cerr << program << ": " << message << "\n";
   return 2;
 }
 
-}  // namespace
 
 int parse(int argc, char** argv, int first, const Program& program, Options& options) {
   for (int i = first; i < argc; ++i) {
@@ -42,7 +38,7 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
       if (value.empty() || *end != '\0' || !(duration > 0.0 && duration <= kMaxDuration)) {
         std::ostringstream s;
         s << "--duration needs a number of seconds in (0, " << kMaxDuration << "], not '" << value << "'";
-        return bad(argv[0], s.str());
+        return refuse(argv[0], s.str());
       }
       options.run.duration = duration;
       options.duration_given = true;
@@ -50,99 +46,37 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
       options.live = true;
     } else if (arg == "--test" && has_value) {
       options.test = argv[++i];
-      if (options.test.empty()) return bad(argv[0], "--test needs the name of a graded test, as the report prints it");
+      if (options.test.empty()) return refuse(argv[0], "--test needs the name of a graded test, as the report prints it");
     } else if (arg == "--seed" && has_value) {
       const std::string value = argv[++i];
       char* end = nullptr;
       options.seed = std::strtoull(value.c_str(), &end, 10);
       if (value.empty() || *end != '\0' || value[0] == '-' || options.seed == 0)
-        return bad(argv[0], "--seed needs a positive whole number, not '" + value + "'");
+        return refuse(argv[0], "--seed needs a positive whole number, not '" + value + "'");
     } else if (arg == "--port" && has_value) {
       const std::string value = argv[++i];
       char* end = nullptr;
       const long port = std::strtol(value.c_str(), &end, 10);
       if (value.empty() || *end != '\0' || port < 0 || port > 65535) {
-        return bad(argv[0], "--port needs a port number from 0 (any free port) to 65535, not '" + value + "'");
+        return refuse(argv[0], "--port needs a port number from 0 (any free port) to 65535, not '" + value + "'");
       }
       options.port = static_cast<int>(port);
     } else if (program.csv && arg == "--csv" && has_value) {
       options.run.csv_path = argv[++i];
-      if (options.run.csv_path.empty()) return bad(argv[0], "--csv needs a file path, not ''");
+      if (options.run.csv_path.empty()) return refuse(argv[0], "--csv needs a file path, not ''");
     } else if ((arg == "--duration" || arg == "--port" || arg == "--test" || arg == "--seed" ||
                 (program.csv && arg == "--csv")) &&
                !has_value) {
-      return bad(argv[0], arg + " needs a value after it");
+      return refuse(argv[0], arg + " needs a value after it");
     } else if (!program.extra || !program.extra(arg)) {
       std::cerr << argv[0] << ": unknown argument '" << arg << "'\n";
       return program.usage(argv[0], 2);
     }
   }
-  if (options.port != 0 && !options.live) return bad(argv[0], "'--port' applies to --live only (add --live)");
+  if (options.port != 0 && !options.live) return refuse(argv[0], "'--port' applies to --live only (add --live)");
   if (!options.test.empty() && options.duration_given)
-    return bad(argv[0], "'--duration' does not apply with '--test': a replay lasts as long as the graded run");
+    return refuse(argv[0], "'--duration' does not apply with '--test': a replay lasts as long as the graded run");
   return -1;
-}
-
-int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& command) {
-  using opspace::hw2::p1b::Part;
-  if (argc < 2) return usage(argv[0], 2);
-  const std::string part = argv[1];
-  if (part == "--help" || part == "-h") return usage(argv[0], 0);
-  command.comparing = part == "compare";
-  if (part == "1") {
-    command.part = Part::kTipPd;
-  } else if (part == "2" || command.comparing) {
-    command.part = Part::kPseudoInverseNullspace;
-  } else if (part == "3") {
-    command.part = Part::kDynamicallyConsistentNullspace;
-  } else {
-    std::cerr << argv[0] << ": unknown part '" << part << "'\n";
-    return usage(argv[0], 2);
-  }
-  Program program;
-  program.usage = usage;
-  program.help = false;  // only as the first argument
-  std::string misplaced;  // --no-joint-damping where it does not apply
-  program.extra = [&](const std::string& arg) {
-    if (arg != "--no-joint-damping") return false;
-    if (command.part == Part::kTipPd && !command.comparing) {
-      command.part = Part::kTipPdWithoutJointDamping;
-    } else if (command.part != Part::kTipPdWithoutJointDamping) {
-      misplaced = "--no-joint-damping applies to PART 1 only, not to '" + part + "'";
-    }
-    return true;
-  };
-  command.options.run.csv_path.clear();  // still empty after parse(): no --csv given
-  const int code = parse(argc, argv, 2, program, command.options);
-  if (code >= 0) return code;
-  if (!misplaced.empty()) return bad(argv[0], misplaced);
-  if (command.options.run.csv_path.empty()) {
-    command.options.run.csv_path =
-        output_path(program_name(argv[0]) + (command.comparing ? "-compare.csv"
-                                             : command.part == Part::kTipPdWithoutJointDamping ? "-part1-no-damping.csv"
-                                                                                                : "-part" + part + ".csv"));
-  }
-  return -1;
-}
-
-int parse_p4(int argc, char** argv, int (*usage)(const char*, int), P4Command& command) {
-  using opspace::hw2::p4::Target;
-  Program program;
-  program.usage = usage;
-  program.csv = false;  // one log per run, named after the target
-  program.extra = [&](const std::string& arg) {
-    if (arg == "z") {
-      command.targets = {Target::kAlongZ0};
-    } else if (arg == "y") {
-      command.targets = {Target::kAlongY0};
-    } else if (arg == "all") {
-      command.targets = {Target::kAlongZ0, Target::kAlongY0};
-    } else {
-      return false;
-    }
-    return true;
-  };
-  return parse(argc, argv, 1, program, command.options);
 }
 
 void publish(const Options& options, const std::string& prefix,

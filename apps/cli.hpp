@@ -1,7 +1,7 @@
-// What the hw2-p1 .. hw2-p4 programs share: the options --duration, --csv, --no-plots and
-// --no-replay (and the command lines of hw2-p1 and hw2-p4, which add their own), the end of
-// the run summary, the pictures after a run, and the error exit. tests/fuzz/fuzz_cli.cpp
-// fuzzes the parsing.
+// What the programs of the simulated problems share, knowing none of them: the options
+// --duration, --csv, --no-plots, --no-replay, --live, --port, --test and --seed (a program
+// adds its own through Program::extra), the end of the run summary, the pictures after a run,
+// and the error exit. tests/fuzz/fuzz_cli.cpp fuzzes the parsing.
 #pragma once
 
 #include <functional>
@@ -10,8 +10,6 @@
 #include <string>
 #include <vector>
 
-#include <opspace/hw2/p1b.hpp>
-#include <opspace/hw2/p4.hpp>
 #include <opspace/visuals/plot.hpp>
 #include <opspace/visuals/replay.hpp>
 #include <opspace/scenarios/common.hpp>
@@ -58,28 +56,8 @@ struct Program {
 /// argument (a message naming it on stderr).
 int parse(int argc, char** argv, int first, const Program& program, Options& options);
 
-/// hw2-p1's command line: PART first (1, 2, 3 or compare; --help and -h only there), then
-/// --no-joint-damping (PART 1 only) and parse()'s options but --help.
-struct P1Command {
-  opspace::hw2::p1b::Part part = opspace::hw2::p1b::Part::kTipPd;
-  bool comparing = false;  ///< PART "compare": PART2 and PART3, their drift overlaid
-  Options options;         ///< csv_path defaults to out/hw2-p1-part<PART>[-no-damping].csv
-};
-
-/// Parses hw2-p1's argv into `command` (usage: the program's); returns as parse() does.
-int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& command);
-
-/// hw2-p4's command line: z, y or all (the last one given counts) and parse()'s options but
-/// --csv (each run names its own log).
-struct P4Command {
-  std::vector<opspace::hw2::p4::Target> targets = {opspace::hw2::p4::Target::kAlongZ0,
-                                                   opspace::hw2::p4::Target::kAlongY0};
-  Options options;  ///< run.duration: set the default before parsing
-};
-
-/// Parses hw2-p4's argv into `command` (usage: the program's); returns as parse() does.
-int parse_p4(int argc, char** argv, int (*usage)(const char*, int), P4Command& command);
-
+/// Prints "program: message" on stderr and returns 2, the exit code of a bad argument.
+int refuse(const char* program, const std::string& message);
 
 /// Adds the rows every run summary ends with to `table`: peak torque and clamped steps of the
 /// run `s` beside those of the reference run `ref` (the grader bounds neither, except in
@@ -128,7 +106,8 @@ int finish(const Options& options, const std::string& prefix, const Result& resu
   return result.failure.empty() ? 0 : 1;
 }
 
-/// With --test: sets the run's duration to the graded run's of `problem` (scenarios/graded.hpp)
+/// With --test: sets the run's duration to the graded run's of problem `problem` (its key, as
+/// in problems.txt; scenarios/graded.hpp)
 /// and prints which test the run replays. The simulated scenarios draw no random input, so the
 /// seed names the grading and changes nothing in the run.
 void start_replay(Options& options, const std::string& problem);

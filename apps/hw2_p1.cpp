@@ -13,9 +13,12 @@
 #include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"
+#include "p1_command.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
+#include <opspace/live/labs.hpp>
+
 #include "live.hpp"
 #endif
 
@@ -138,6 +141,8 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
 int live(Part part, const cli::Options& options, const std::string& prefix) {
   std::cout << "problem 1b live, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
   opspace::live::P1bLab lab("hw2-p1", part, &opspace::hw2::p1b::control);
+  // The page draws the reference's tip path of the law in force beside the run: its ghost.
+  lab.set_reference(reference::kP1bTipPathStep, &reference::p1b_tip_path);
   return cli::serve_live(
       lab, options, prefix, [&] { return p1b::figures(lab.result(), lab.part()); },
       [&] { return p1b::replay_scene(lab.result(), lab.part()); });

@@ -2,6 +2,7 @@
 // (hw2-p2) or solutions/p2.cpp (hw2-p2-sol).
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include <opspace/hw2/p2.hpp>
@@ -11,10 +12,11 @@
 #include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"
+#include "program.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
-#include "live.hpp"
+#include <opspace/live/labs.hpp>
 #endif
 
 namespace {
@@ -79,44 +81,35 @@ void print_summary(const p2::Result& r, double duration, const std::string& csv)
   cli::print_summary_end(r, csv);
 }
 
+/// With --test: the values the report's figures end with (tests/graded/p2.cpp).
+void print_finals(const cli::Options& options, const p2::Result& r) {
+  const p2::Sample& last = r.samples.back();
+  cli::print_final(options, "position error |x_p - x_pd|", p2::position_error(last), "m");
+  cli::print_final(options, "orientation error (angle of R R_d^T)", p2::orientation_angle(last), "rad");
+}
+
+/// hw2-p2, described once: cli::run_program() is its main.
+cli::ScenarioProgram<p2::Scenario> program() {
+  cli::ScenarioProgram<p2::Scenario> program;
+  program.name = "hw2-p2";
+  program.problem = "2";
+  program.heading = std::string("problem 2, iiwa position + Euler-parameter tracking (") + OPSPACE_GRADED_LIBRARY + ")";
+  program.duration = p2::kDefaultDuration;
+  program.usage = &usage;
+  program.scenario = [] { return p2::Scenario{&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration}; };
+  program.summary = &print_summary;
+  program.finals = &print_finals;
+  program.figures = [](const p2::Result& r) { return p2::figures(r); };
+  program.replay_scene = [](const p2::Result& r) { return p2::replay_scene(r); };
+#ifdef OPSPACE_LIVE
+  program.lab = [](const std::string& name) {
+    return std::make_unique<opspace::live::P2Lab>(name, &opspace::hw2::p2::control,
+                                                  &opspace::hw2::p2::desired_acceleration);
+  };
+#endif
+  return program;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  cli::Options options;
-  options.run.duration = p2::kDefaultDuration;
-  options.run.csv_path = cli::output_path(cli::program_name(argv[0]) + ".csv");
-  cli::Program program;
-  program.usage = &usage;
-  const int code = cli::parse(argc, argv, 1, program, options);
-  if (code >= 0) return code;
-  if (!cli::watchdog_from_environment(argv[0], options)) return 2;
-  cli::start_replay(options, "2");
-  options.run.progress = &std::cerr;
-  options.run.label = "hw2-p2";
-  std::cout << "problem 2, iiwa position + Euler-parameter tracking (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  if (options.live) {
-#ifdef OPSPACE_LIVE
-    return cli::guarded(argv[0], [&] {
-      opspace::live::P2Lab lab("hw2-p2", &opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration);
-      return cli::serve_live(
-          lab, options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p2::figures(lab.result()); },
-          [&] { return p2::replay_scene(lab.result()); });
-    });
-#else
-    return cli::no_live(argv[0]);
-#endif
-  }
-  return cli::guarded(argv[0], [&] {
-    const p2::Result result =
-        p2::run(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration, options.run);
-    print_summary(result, options.run.duration, options.run.csv_path);
-    if (!result.samples.empty()) {  // --test: the values the report's figures end with (tests/graded/p2.cpp)
-      const p2::Sample& last = result.samples.back();
-      cli::print_final(options, "position error |x_p - x_pd|", p2::position_error(last), "m");
-      cli::print_final(options, "orientation error (angle of R R_d^T)", p2::orientation_angle(last), "rad");
-    }
-    return cli::finish(
-        options, opspace::visuals::prefix_of(options.run.csv_path), result, [&] { return p2::figures(result); },
-        [&] { return p2::replay_scene(result); });
-  });
-}
+int main(int argc, char** argv) { return cli::run_program(argc, argv, program()); }

@@ -2,6 +2,7 @@
 // functions of exercises/p3.cpp (hw2-p3) or solutions/p3.cpp (hw2-p3-sol).
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -12,10 +13,11 @@
 #include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"
+#include "program.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
-#include "live.hpp"
+#include <opspace/live/labs.hpp>
 #endif
 
 namespace {
@@ -85,45 +87,36 @@ void print_summary(const p3::Result& r, double duration, const std::string& csv)
   cli::print_summary_end(r, csv);
 }
 
+/// With --test: the values the report's figures end with (tests/graded/p3.cpp).
+void print_finals(const cli::Options& options, const p3::Result& r) {
+  const p3::Sample& last = r.samples.back();
+  cli::print_final(options, "force error |F_x - 10 N|", p3::force_error(last), "N");
+  cli::print_final(options, "|(y - y_d, z - z_d)|", p3::yz_error(last), "m");
+  cli::print_final(options, "rotation-about-x error", p3::rotation_x_error(last), "rad");
+}
+
+/// hw2-p3, described once: cli::run_program() is its main.
+cli::ScenarioProgram<p3::Scenario> program() {
+  cli::ScenarioProgram<p3::Scenario> program;
+  program.name = "hw2-p3";
+  program.problem = "3";
+  program.heading =
+      std::string("problem 3, iiwa unified motion and force control against a plane (") + OPSPACE_GRADED_LIBRARY + ")";
+  program.duration = p3::kDefaultDuration;
+  program.usage = &usage;
+  program.scenario = [] { return p3::Scenario(&opspace::hw2::p3::control); };
+  program.summary = &print_summary;
+  program.finals = &print_finals;
+  program.figures = [](const p3::Result& r) { return p3::figures(r); };
+  program.replay_scene = [](const p3::Result& r) { return p3::replay_scene(r); };
+#ifdef OPSPACE_LIVE
+  program.lab = [](const std::string& name) {
+    return std::make_unique<opspace::live::P3Lab>(name, &opspace::hw2::p3::control);
+  };
+#endif
+  return program;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  cli::Options options;
-  options.run.duration = p3::kDefaultDuration;
-  options.run.csv_path = cli::output_path(cli::program_name(argv[0]) + ".csv");
-  cli::Program program;
-  program.usage = &usage;
-  const int code = cli::parse(argc, argv, 1, program, options);
-  if (code >= 0) return code;
-  if (!cli::watchdog_from_environment(argv[0], options)) return 2;
-  cli::start_replay(options, "3");
-  options.run.progress = &std::cerr;
-  options.run.label = "hw2-p3";
-  std::cout << "problem 3, iiwa unified motion and force control against a plane (" << OPSPACE_GRADED_LIBRARY
-            << ")\n";
-  if (options.live) {
-#ifdef OPSPACE_LIVE
-    return cli::guarded(argv[0], [&] {
-      opspace::live::P3Lab lab("hw2-p3", &opspace::hw2::p3::control);
-      return cli::serve_live(
-          lab, options, opspace::visuals::prefix_of(options.run.csv_path), [&] { return p3::figures(lab.result()); },
-          [&] { return p3::replay_scene(lab.result()); });
-    });
-#else
-    return cli::no_live(argv[0]);
-#endif
-  }
-  return cli::guarded(argv[0], [&] {
-    const p3::Result result = p3::run(&opspace::hw2::p3::control, options.run);
-    print_summary(result, options.run.duration, options.run.csv_path);
-    if (!result.samples.empty()) {  // --test: the values the report's figures end with (tests/graded/p3.cpp)
-      const p3::Sample& last = result.samples.back();
-      cli::print_final(options, "force error |F_x - 10 N|", p3::force_error(last), "N");
-      cli::print_final(options, "|(y - y_d, z - z_d)|", p3::yz_error(last), "m");
-      cli::print_final(options, "rotation-about-x error", p3::rotation_x_error(last), "rad");
-    }
-    return cli::finish(
-        options, opspace::visuals::prefix_of(options.run.csv_path), result, [&] { return p3::figures(result); },
-        [&] { return p3::replay_scene(result); });
-  });
-}
+int main(int argc, char** argv) { return cli::run_program(argc, argv, program()); }

@@ -18,9 +18,12 @@
 #include <opspace/model/urdf.hpp>
 
 #include "cli.hpp"
+#include "p4_command.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
+#include <opspace/live/labs.hpp>
+
 #include "live.hpp"
 #endif
 

@@ -1,4 +1,4 @@
-// What the four programs' --live share (docs/live.md): serve a problem's Lab until Ctrl-C, then
+// What the programs' --live share (docs/live.md): serve a problem's Lab until Ctrl-C, then
 // write the last run's log summary, plots and replay page like any run. Included only where the
 // live lab is built (OPSPACE_LIVE).
 #pragma once
@@ -6,21 +6,12 @@
 #include <iostream>
 #include <string>
 
-#include <opspace/live/labs.hpp>
+#include <opspace/live/lab.hpp>
 #include <opspace/live/run.hpp>
 
 #include "cli.hpp"
-#include "reference_runs.hpp"
 
 namespace cli {
-
-/// Problem 1b's page draws the reference's tip path (solutions/, reference_runs.hpp) of the law in
-/// force beside the run: its ghost. The other problems have none.
-inline void attach_reference(opspace::live::P1bLab& lab) {
-  lab.set_reference(reference::kP1bTipPathStep, &reference::p1b_tip_path);
-}
-template <class Lab>
-void attach_reference(Lab&) {}
 
 /// Serves `lab` live (port, duration from `options`; log at `prefix`-live.csv), then publishes
 /// the last run's `figures()` and `scene()` at `prefix`-live-*; returns the exit code.
@@ -31,7 +22,6 @@ int serve_live(Lab& lab, const Options& options, const std::string& prefix, Figu
   live.duration = options.duration_given ? options.run.duration : 0.0;
   live.csv_path = prefix + "-live.csv";
   live.watchdog = options.run.watchdog;
-  attach_reference(lab);
   const opspace::live::LiveReport report = opspace::live::serve(lab, live, std::cout);
   std::cout << "\nlive run ended: " << report.steps << " steps in " << report.wall_seconds << " s of wall time, "
             << report.frames << " frames sent, " << report.resyncs << " resynchronisations (a step that fell "

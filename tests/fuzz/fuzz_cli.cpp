@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "p1_command.hpp"
+#include "p4_command.hpp"
 
 namespace {
 
