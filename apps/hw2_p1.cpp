@@ -4,6 +4,7 @@
 #include <cstring>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include <opspace/hw2/p1b.hpp>
@@ -14,12 +15,11 @@
 
 #include "cli.hpp"
 #include "p1_command.hpp"
+#include "program.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
 #include <opspace/live/labs.hpp>
-
-#include "live.hpp"
 #endif
 
 namespace {
@@ -136,18 +136,32 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
   return part2.failure.empty() && part3.failure.empty() ? 0 : 1;
 }
 
+/// hw2-p1 for `part` (but compare), described once: cli::run_parsed() is the rest of its main.
+cli::ScenarioProgram<p1b::Scenario> program(Part part) {
+  cli::ScenarioProgram<p1b::Scenario> program;
+  program.name = "hw2-p1";
+  program.problem = "1b";
+  program.heading = "problem 1b, " + p1b::describe(part) + " (" + OPSPACE_GRADED_LIBRARY + ")";
+  program.live_heading = "problem 1b live, " + p1b::describe(part) + " (" + OPSPACE_GRADED_LIBRARY + ")";
+  program.duration = p1b::kDefaultDuration;
+  program.usage = &usage;
+  program.scenario = [part] { return p1b::Scenario(part, &opspace::hw2::p1b::control); };
+  program.summary = [part](const p1b::Result& r, double duration, const std::string& csv) {
+    print_summary(part, r, duration, csv);
+  };
+  program.finals = [part](const cli::Options& options, const p1b::Result& r) { print_finals(options, part, r); };
+  program.figures = [](const p1b::Result& r, const p1b::Scenario& s) { return p1b::figures(r, s.part); };
+  program.replay_scene = [](const p1b::Result& r, const p1b::Scenario& s) { return p1b::replay_scene(r, s.part); };
 #ifdef OPSPACE_LIVE
-/// `part` live in the browser until Ctrl-C; then the session's log, plots and replay page.
-int live(Part part, const cli::Options& options, const std::string& prefix) {
-  std::cout << "problem 1b live, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  opspace::live::P1bLab lab("hw2-p1", part, &opspace::hw2::p1b::control);
-  // The page draws the reference's tip path of the law in force beside the run: its ghost.
-  lab.set_reference(reference::kP1bTipPathStep, &reference::p1b_tip_path);
-  return cli::serve_live(
-      lab, options, prefix, [&] { return p1b::figures(lab.result(), lab.part()); },
-      [&] { return p1b::replay_scene(lab.result(), lab.part()); });
-}
+  program.lab = [part](const std::string& name) {
+    auto lab = std::make_unique<opspace::live::P1bLab>(name, part, &opspace::hw2::p1b::control);
+    // The page draws the reference's tip path of the law in force beside the run: its ghost.
+    lab->set_reference(reference::kP1bTipPathStep, &reference::p1b_tip_path);
+    return lab;
+  };
 #endif
+  return program;
+}
 
 }  // namespace
 
@@ -156,28 +170,12 @@ int main(int argc, char** argv) {
   command.options.run.duration = p1b::kDefaultDuration;
   const int code = cli::parse_p1(argc, argv, &usage, command);
   if (code >= 0) return code;
-  const Part part = command.part;
+  if (!command.comparing) return cli::run_parsed(argv[0], command.options, program(command.part));
   cli::Options& options = command.options;
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
   cli::start_replay(options, "1b");
   options.run.progress = &std::cerr;
   options.run.label = "hw2-p1";
   const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);
-  if (command.comparing) return cli::guarded(argv[0], [&] { return compare(options, prefix); });
-  if (options.live) {
-#ifdef OPSPACE_LIVE
-    return cli::guarded(argv[0], [&] { return live(part, options, prefix); });
-#else
-    return cli::no_live(argv[0]);
-#endif
-  }
-  std::cout << "problem 1b, " << p1b::describe(part) << " (" << OPSPACE_GRADED_LIBRARY << ")\n";
-  return cli::guarded(argv[0], [&] {
-    const p1b::Result result = p1b::run(part, &opspace::hw2::p1b::control, options.run);
-    print_summary(part, result, options.run.duration, options.run.csv_path);
-    print_finals(options, part, result);
-    return cli::finish(
-        options, prefix, result, [&] { return p1b::figures(result, part); },
-        [&] { return p1b::replay_scene(result, part); });
-  });
+  return cli::guarded(argv[0], [&] { return compare(options, prefix); });
 }

@@ -99,8 +99,8 @@ cli::ScenarioProgram<p2::Scenario> program() {
   program.scenario = [] { return p2::Scenario{&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration}; };
   program.summary = &print_summary;
   program.finals = &print_finals;
-  program.figures = [](const p2::Result& r) { return p2::figures(r); };
-  program.replay_scene = [](const p2::Result& r) { return p2::replay_scene(r); };
+  program.figures = [](const p2::Result& r, const p2::Scenario&) { return p2::figures(r); };
+  program.replay_scene = [](const p2::Result& r, const p2::Scenario&) { return p2::replay_scene(r); };
 #ifdef OPSPACE_LIVE
   program.lab = [](const std::string& name) {
     return std::make_unique<opspace::live::P2Lab>(name, &opspace::hw2::p2::control,

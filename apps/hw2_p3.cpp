@@ -107,8 +107,8 @@ cli::ScenarioProgram<p3::Scenario> program() {
   program.scenario = [] { return p3::Scenario(&opspace::hw2::p3::control); };
   program.summary = &print_summary;
   program.finals = &print_finals;
-  program.figures = [](const p3::Result& r) { return p3::figures(r); };
-  program.replay_scene = [](const p3::Result& r) { return p3::replay_scene(r); };
+  program.figures = [](const p3::Result& r, const p3::Scenario&) { return p3::figures(r); };
+  program.replay_scene = [](const p3::Result& r, const p3::Scenario&) { return p3::replay_scene(r); };
 #ifdef OPSPACE_LIVE
   program.lab = [](const std::string& name) {
     return std::make_unique<opspace::live::P3Lab>(name, &opspace::hw2::p3::control);

@@ -45,6 +45,8 @@ class LoopLab : public Lab {
   std::vector<double> csv_row() const override { return loop_->scenario.csv_row(result_.samples.back()); }
   /// The samples of the current run (since the last reset): its plots and replay page.
   const Result& result() const { return result_; }
+  /// The current run's scenario, with the law in force.
+  const Scenario& scenario() const { return loop_->scenario; }
 
  protected:
   /// What the page shows, and the scenario every reset starts from; the problem's constructor
