@@ -4,7 +4,10 @@
 # with the plain law) and in one run of another duration must be byte-identical to the log
 # closed-loop-oracle writes of the same run by its own path (closed_loop_oracle.cpp). A change
 # in the programs' loop, rows or writer changes some byte and fails here; the oracle shares
-# with them only the library's simulation, observers, goals and solutions/.
+# with them only the library's simulation, observers, goals and solutions/. Both come from the
+# same build (same compiler, same flags: no -march, so x86-64 contracts no a*b+c into an FMA
+# that could round one expression differently in the two places); the oracle's rows repeat the
+# scenarios' expressions operation for operation, so equal inputs print equal digits.
 set -euo pipefail
 apps="$1" oracle="$2" work="$3"
 rm -rf "$work"
