@@ -1,6 +1,6 @@
 // Kinematics of the models in robots/: Jacobians against finite differences of the pose they
-// differentiate, Jdot qdot against finite differences of J qdot, and the scenario points of
-// problems 1b and 2 against the positions the course states.
+// differentiate, Jdot qdot against finite differences of J qdot, and a fixed joint's frame as a
+// tip (where the course's configurations put each task point: test_catalogue.cpp).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -105,39 +105,6 @@ TEST_CASE("Jdot qdot is the rate of change of J qdot along the motion") {
     CHECK_MESSAGE((Jdot_qdot - (vp - vm) / (2 * kStep)).norm() < 1e-6,
                   "Jdot qdot must be the point's acceleration [a; wdot] when qdd = 0");
   });
-}
-
-TEST_CASE("the PUMA tip starts where the course puts it") {
-  // robots.md: tip (-0.2, 0, 0) on link end-effector at q = (90, -22.5, 180, 90, 100, 180) deg
-  // is at about (-0.1501, 0.8111, 0.5780): four decimals, so within 1 mm.
-  const Model model = load_urdf(robot_path("puma.urdf"));
-  Data data(model);
-  Eigen::VectorXd q(6);
-  q << 90, -22.5, 180, 90, 100, 180;
-  forward_kinematics(model, data, q * kDeg);
-  const Eigen::Vector3d tip = point_position(model, data, model.frame_id("end-effector"), {-0.2, 0, 0});
-  CAPTURE(tip.transpose());
-  CHECK_MESSAGE((tip - Eigen::Vector3d(-0.1501, 0.8111, 0.5780)).norm() < 1e-3,
-                "the PUMA's joint origins or axes differ from the course model");
-}
-
-TEST_CASE("the iiwa operational point starts near the problem 2 trajectory") {
-  // robots.md: link7's origin at q = (125.9, 39.2, -49.2, 70.0, -62.4, 80.2, -172.8) deg is at
-  // about (0.0005, 0.595, 0.601) with quaternion (w, x, y, z) about (0.5, 0.5, 0.5, 0.5). The
-  // angles are given to 0.05 deg (~0.7 mm at 0.8 m reach) and the position to 1 mm: allow 2 mm,
-  // and 0.01 on the quaternion (about 1 deg).
-  const Model model = load_urdf(robot_path("iiwa7.urdf"));
-  Data data(model);
-  Eigen::VectorXd q(7);
-  q << 125.9, 39.2, -49.2, 70.0, -62.4, 80.2, -172.8;
-  forward_kinematics(model, data, q * kDeg);
-  const Eigen::Isometry3d X = frame_pose(model, data, model.frame_id("link7"));
-  CAPTURE(X.translation().transpose());
-  CHECK((X.translation() - Eigen::Vector3d(0.0005, 0.595, 0.601)).norm() < 2e-3);
-  const Eigen::Quaterniond quat(X.linear());
-  CAPTURE(quat.coeffs().transpose());
-  // q and -q are the same orientation: compare |<q, q_ref>| with 1.
-  CHECK(std::abs(quat.dot(Eigen::Quaterniond(0.5, 0.5, 0.5, 0.5))) > std::cos(0.01));
 }
 
 TEST_CASE("a fixed joint's child keeps its frame, so a tool frame can be the tip") {
