@@ -1,6 +1,6 @@
 /// @file robots.hpp
-/// The four robots of the explorer page, as the problems use them: URDF, tip point, the
-/// configuration the page opens at, and what it says about each.
+/// The four robots of the explorer page: the course's robots (opspace/model/catalogue.hpp),
+/// each with the configuration the page opens at and what the page says about it.
 #pragma once
 
 #include <Eigen/Core>
