@@ -13,8 +13,8 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/algorithms/opspace.hpp"
+#include "opspace/model/catalogue.hpp"
 #include "opspace/scenarios.hpp"
-#include "opspace/model/urdf.hpp"
 
 namespace {
 
@@ -22,7 +22,7 @@ namespace p1b = opspace::scenarios::p1b;
 using opspace::hw2::p1b::Part;
 
 struct P1bSetup {
-  opspace::Model puma = opspace::load_urdf(opspace::robot_path(p1b::kRobotFile));
+  opspace::Model puma = opspace::catalogue::load(opspace::catalogue::kPuma);
   p1b::Observer observer{puma};
   std::vector<p1b::Vector6d> q, dq;
   P1bSetup() {
@@ -65,7 +65,7 @@ BENCHMARK(BM_P1bTick)->Arg(1)->Arg(2)->Arg(3)->ArgName("part");
 namespace p2 = opspace::scenarios::p2;
 
 struct P2Setup {
-  opspace::Model iiwa = opspace::load_urdf(opspace::robot_path(p2::kRobotFile));
+  opspace::Model iiwa = opspace::catalogue::load(opspace::catalogue::kIiwa);
   p2::Observer observer{iiwa};
   std::vector<p2::Vector7d> q, dq;
   P2Setup() {
@@ -131,7 +131,7 @@ namespace p4 = opspace::scenarios::p4;
 using opspace::hw2::p4::Target;
 
 struct P4Setup {
-  opspace::Model rrr = opspace::load_urdf(opspace::robot_path(p4::kRobotFile));
+  opspace::Model rrr = opspace::catalogue::load(opspace::catalogue::kRRR);
   p4::Observer observer{rrr};
   std::vector<Eigen::Vector3d> q[2], dq;
   P4Setup() {
@@ -173,12 +173,13 @@ struct KernelSetup {
   std::vector<Eigen::VectorXd> g;
   Eigen::Index dof = 0, task_dim = 0;
 
-  KernelSetup(const char* file, const char* tip, const Eigen::Vector3d& point, Eigen::Index m) : task_dim(m) {
-    const opspace::Model model = opspace::load_urdf(opspace::robot_path(file));
+  KernelSetup(const opspace::catalogue::CourseRobot& robot, Eigen::Index m) : task_dim(m) {
+    const opspace::Model model = opspace::catalogue::load(robot);
+    const Eigen::Vector3d point = opspace::catalogue::tip_point(robot);
     opspace::Data data(model);
     name = model.name;
     dof = model.dof();
-    const int frame = model.frame_id(tip);
+    const int frame = model.frame_id(robot.tip_link);
     opspace::Matrix6Xd J0(6, dof);
     for (int k = 0; k < 64; ++k) {
       const Eigen::VectorXd q = Eigen::VectorXd::LinSpaced(dof, -1.0, 1.0) * std::sin(0.1 * k) +
@@ -194,8 +195,8 @@ struct KernelSetup {
 
 /// 0: the iiwa's 6-D task (problem 2: link7's origin), 1: the PUMA's 3-D task (problem 1b's tip).
 KernelSetup& kernel_setup(int which) {
-  static KernelSetup iiwa(p2::kRobotFile, p2::kTipLink, Eigen::Vector3d::Zero(), 6);
-  static KernelSetup puma(p1b::kRobotFile, p1b::kTipLink, p1b::tip_point(), 3);
+  static KernelSetup iiwa(opspace::catalogue::kIiwa, 6);
+  static KernelSetup puma(opspace::catalogue::kPuma, 3);
   return which == 0 ? iiwa : puma;
 }
 

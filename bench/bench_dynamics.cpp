@@ -10,7 +10,7 @@
 
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
-#include "opspace/model/urdf.hpp"
+#include "opspace/model/catalogue.hpp"
 #include "robots.hpp"
 
 namespace {
@@ -26,10 +26,10 @@ struct Setup {
   std::vector<Eigen::VectorXd> q, qdot;
 
   explicit Setup(const bench::Robot& r)
-      : model(load_urdf(robot_path(r.file))),
+      : model(catalogue::load(r)),
         data(model),
-        frame(model.frame_id(r.frame)),
-        point(r.point),
+        frame(model.frame_id(r.tip_link)),
+        point(catalogue::tip_point(r)),
         q(bench::positions(model.dof())),
         qdot(bench::velocities(model.dof())) {}
 };

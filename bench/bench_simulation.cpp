@@ -7,13 +7,12 @@
 
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
-#include "opspace/math/constants.hpp"
+#include "opspace/model/catalogue.hpp"
 #include "opspace/simulation/simulation.hpp"
-#include "opspace/model/urdf.hpp"
 
 namespace {
 
-using opspace::kDeg;
+namespace catalogue = opspace::catalogue;
 
 struct Setup {
   opspace::Model model;
@@ -22,23 +21,21 @@ struct Setup {
 };
 
 Setup puma(bool contact) {
-  Setup s{opspace::load_urdf(opspace::robot_path("puma.urdf")), Eigen::VectorXd(6), contact};
-  s.q0 << 90 * kDeg, -22.5 * kDeg, 180 * kDeg, 90 * kDeg, 100 * kDeg, 180 * kDeg;  // problem 1b
+  Setup s{catalogue::load(catalogue::kPuma), catalogue::puma_start_q(), contact};  // problem 1b's start
   if (contact) {  // the PUMA has no collider: a 2 cm sphere on its tip point, for this bench
-    const opspace::Frame& ee = s.model.frames[s.model.frame_id("end-effector")];
+    const opspace::Frame& ee = s.model.frames[s.model.frame_id(catalogue::kPuma.tip_link)];
     opspace::Shape sphere;
     sphere.kind = opspace::Shape::Kind::kSphere;
     sphere.radius = 0.02;
     sphere.body = ee.body;
-    sphere.placement = ee.placement * Eigen::Translation3d(-0.2, 0, 0);
+    sphere.placement = ee.placement * Eigen::Translation3d(catalogue::tip_point(catalogue::kPuma));
     s.model.collisions.push_back(sphere);
   }
   return s;
 }
 
 Setup iiwa(bool contact) {
-  Setup s{opspace::load_urdf(opspace::robot_path("iiwa7.urdf")), Eigen::VectorXd(7), contact};
-  s.q0 << 125.9 * kDeg, 39.2 * kDeg, -49.2 * kDeg, 70.0 * kDeg, -62.4 * kDeg, 80.2 * kDeg, -172.8 * kDeg;
+  Setup s{catalogue::load(catalogue::kIiwa), catalogue::iiwa_start_q(), contact};  // problem 2's start
   return s;
 }
 

@@ -7,17 +7,14 @@
 #include <cmath>
 #include <vector>
 
+#include "opspace/model/catalogue.hpp"
+
 namespace opspace::bench {
 
-/// A robot (a file of robots/) and the operational point of its task: point `point` of link
-/// `frame`. 0 = iiwa7, problem 2's link7 origin; 1 = PUMA, problem 1b's tip.
-struct Robot {
-  const char* file;
-  const char* frame;
-  Eigen::Vector3d point;
-};
-inline const std::array<Robot, 2> kRobots = {{{"iiwa7.urdf", "link7", Eigen::Vector3d::Zero()},
-                                              {"puma.urdf", "end-effector", Eigen::Vector3d(-0.2, 0.0, 0.0)}}};
+/// A course robot and the operational point of its task (opspace/model/catalogue.hpp):
+/// 0 = iiwa7, problem 2's link7 origin; 1 = PUMA, problem 1b's tip.
+using Robot = catalogue::CourseRobot;
+inline constexpr std::array<Robot, 2> kRobots{catalogue::kIiwa, catalogue::kPuma};
 
 /// The cycle of states a benchmark steps through, one per iteration (a control loop never
 /// calls twice at the same state): q_k = linspace(-1, 1) sin(0.1 k), qdot_k = linspace(0.5, -0.5) cos(0.1 k).

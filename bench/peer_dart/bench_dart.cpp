@@ -19,6 +19,7 @@
 #include <dart/utils/urdf/urdf.hpp>
 
 #include "opspace/algorithms/dynamics.hpp"
+#include "opspace/model/catalogue.hpp"
 #include "opspace/model/urdf.hpp"
 
 namespace {
@@ -79,8 +80,8 @@ struct Pair {
 };
 
 Pair& pair(int which) {
-  static Pair iiwa("iiwa7.urdf");
-  static Pair puma("puma.urdf");
+  static Pair iiwa(catalogue::kIiwa.file);
+  static Pair puma(catalogue::kPuma.file);
   return which == 0 ? iiwa : puma;
 }
 

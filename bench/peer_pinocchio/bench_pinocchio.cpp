@@ -28,7 +28,7 @@
 #include "../robots.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
-#include "opspace/model/urdf.hpp"
+#include "opspace/model/catalogue.hpp"
 
 namespace {
 
@@ -62,13 +62,13 @@ struct Pair {
   std::vector<Eigen::VectorXd> q_pin, qdot_pin;    // the same, in Pinocchio's order
 
   explicit Pair(const opspace::bench::Robot& r)
-      : model(opspace::load_urdf(opspace::robot_path(r.file))),
+      : model(opspace::catalogue::load(r)),
         data(model),
-        frame(model.frame_id(r.frame)),
-        point(r.point),
+        frame(model.frame_id(r.tip_link)),
+        point(opspace::catalogue::tip_point(r)),
         q(opspace::bench::positions(model.dof())),
         qdot(opspace::bench::velocities(model.dof())) {
-    const std::string path = opspace::robot_path(r.file);
+    const std::string path = opspace::catalogue::path(r);
     pin::urdf::buildModel(path, pmodel);  // fixed base
     if (pmodel.nq != model.dof() || pmodel.nv != model.dof()) {
       fail(path + ": Pinocchio has nq " + std::to_string(pmodel.nq) + ", opspace " + std::to_string(model.dof()) +
@@ -80,9 +80,9 @@ struct Pair {
       if (pmodel.joints[id].nq() != 1) fail(path + ": Pinocchio's joint " + body.joint_name + " is not 1-DOF");
       pin_index.push_back(pmodel.joints[id].idx_q());
     }
-    if (!pmodel.existFrame(r.frame, pin::BODY)) fail(path + ": Pinocchio has no body frame " + r.frame);
-    const pin::Frame& link = pmodel.frames[pmodel.getFrameId(r.frame, pin::BODY)];
-    pframe = pmodel.addFrame(pin::Frame("operational point", link.parentJoint, pmodel.getFrameId(r.frame, pin::BODY),
+    if (!pmodel.existFrame(r.tip_link, pin::BODY)) fail(path + ": Pinocchio has no body frame " + r.tip_link);
+    const pin::Frame& link = pmodel.frames[pmodel.getFrameId(r.tip_link, pin::BODY)];
+    pframe = pmodel.addFrame(pin::Frame("operational point", link.parentJoint, pmodel.getFrameId(r.tip_link, pin::BODY),
                                         link.placement * pin::SE3(Eigen::Matrix3d::Identity(), point), pin::OP_FRAME));
     pmodel.gravity.linear(model.gravity);
     pmodel_b = pmodel;
