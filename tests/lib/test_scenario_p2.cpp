@@ -97,7 +97,7 @@ TEST_CASE("the iiwa starts about 5 mm and within a degree of the desired pose, a
   const hw2::p2::State& s = observer.observe(0.0, p2::initial_q(), Vector7d::Zero(), r.x.tail<4>());
   CHECK((s.x_p - Eigen::Vector3d(0.0005, 0.595, 0.601)).norm() < 1e-3);  // robots.md's 3 digits
   CHECK((s.x_p - r.x.head<3>()).norm() < 6e-3);
-  CHECK(rotation_angle_between(s.lambda, r.x.tail<4>()) < kPi / 180);
+  CHECK(rotation_angle_between(s.lambda, r.x.tail<4>()) < kDeg);
   CHECK(s.v.norm() == 0.0);
   CHECK(s.w.norm() == 0.0);
 }

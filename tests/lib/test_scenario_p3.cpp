@@ -39,7 +39,7 @@ TEST_CASE("problem 3 starts at rest with the tool face flat on the plane x = 0.0
   // Newton's steps with J0^+ are the smallest joint moves that close such an error: about a
   // degree. 1.5 deg flags a start that converged to another posture.
   const p3::Vector7d moved = p3::initial_q() - scenarios::p2::initial_q();
-  CHECK(moved.cwiseAbs().maxCoeff() < 1.5 * kPi / 180.0);
+  CHECK(moved.cwiseAbs().maxCoeff() < 1.5 * kDeg);
 }
 
 TEST_CASE("problem 3's goal is problem 2's trajectory with F_d = 10 N along x and the problem-set gains") {

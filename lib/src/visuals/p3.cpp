@@ -15,7 +15,7 @@ namespace {
 constexpr const char* kMeasured = "#1f77b4";
 constexpr const char* kDesired = "#ff7f0e";
 constexpr const char* kAverage = "#2ca02c";
-constexpr double kDegPerRad = 180.0 / kPi;
+constexpr double kDegPerRad = 1.0 / kDeg;
 
 using visuals::column;
 

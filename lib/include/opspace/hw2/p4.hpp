@@ -8,6 +8,7 @@
 #include <array>
 
 #include "opspace/algorithms/singularity.hpp"  // SingularityType, kSingularValueTolerance
+#include "opspace/math/constants.hpp"          // kPi
 
 namespace opspace::hw2::p4 {
 
@@ -15,10 +16,11 @@ using opspace::SingularityType;
 
 /// sigma_i <= kTolerance * sigma_max counts as a vanishing singular value.
 inline constexpr double kTolerance = opspace::kSingularValueTolerance;
-/// Question v: the elbow angle of the retracted arm, the minimum of the potential for Z0 (rad).
-inline constexpr double kRetractedElbow = 1.5707963267948966;
+/// Question v: the elbow angle of the retracted arm, the minimum of the potential for Z0 (rad):
+/// 90 deg.
+inline constexpr double kRetractedElbow = kPi / 2.0;
 /// Question v: the angle joint 1 is driven to for Y0 (rad): 90 deg.
-inline constexpr double kTurnedJoint1 = 1.5707963267948966;
+inline constexpr double kTurnedJoint1 = kPi / 2.0;
 
 /// The tip's kinematics at one configuration, computed by the library (base frame {0}).
 struct Kinematics {
