@@ -74,6 +74,10 @@ int parse(int argc, char** argv, int first, const Program& program, Options& opt
     }
   }
   if (options.port != 0 && !options.live) return refuse(argv[0], "'--port' applies to --live only (add --live)");
+  // The seed is the grader's: it names the formula tests' inputs of one grading, so a program
+  // takes it only with the graded test it replays (no simulated test draws from it).
+  if (options.seed != 0 && options.test.empty())
+    return refuse(argv[0], "'--seed' applies to --test only (the replay of a graded test; add --test NAME)");
   if (!options.test.empty() && options.duration_given)
     return refuse(argv[0], "'--duration' does not apply with '--test': a replay lasts as long as the graded run");
   return -1;

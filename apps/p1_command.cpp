@@ -38,6 +38,10 @@ int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& c
   const int code = parse(argc, argv, 2, program, command.options);
   if (code >= 0) return code;
   if (!misplaced.empty()) return refuse(argv[0], misplaced);
+  // compare runs PART2 and PART3 offline, one after the other; the live page switches PART.
+  if (command.comparing && command.options.live)
+    return refuse(argv[0], "'--live' does not apply to 'compare' (it runs PART2 and PART3 offline): "
+                           "run 'hw2-p1 2 --live' or 'hw2-p1 3 --live' and switch the PART on the page");
   if (command.options.run.csv_path.empty()) {
     command.options.run.csv_path =
         output_path(program_name(argv[0]) + (command.comparing ? "-compare.csv"

@@ -199,6 +199,15 @@ TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, neve
   o = p2({"hw2-p2", "--test"}, options);
   CHECK(o.code == 2);
   CHECK(o.err.find("--test needs a value") != std::string::npos);
+  // Without --test a seed would be printed and used for nothing.
+  o = p2({"hw2-p2", "--seed", "41"}, options);
+  CHECK(o.code == 2);
+  CHECK_MESSAGE(o.err.find("'--seed' applies to --test only") != std::string::npos, o.err);
+  // compare runs offline: --live is refused, naming it, never ignored (the ratio test's replay).
+  cli::P1Command compare;
+  o = p1({"hw2-p1", "compare", "--test", "iii. x", "--live"}, compare);
+  CHECK(o.code == 2);
+  CHECK_MESSAGE(o.err.find("'--live' does not apply to 'compare'") != std::string::npos, o.err);
   o = p2({"hw2-p2", "--test", ""}, options);
   CHECK(o.code == 2);
 }

@@ -23,8 +23,8 @@
 # Seen to fail: with check 3's arguments the test's own (y for problem 4's Y0 test: "the default
 # live run (y --live) starts as the replay too: 2147 rows ... agree"); with the replay's log taken
 # from the plain controller's run of the same target (hw2-p4-sol-y-plain.csv): check 2 says
-# "row 1 differs in tau1"; with the ratio test's `compare` command (below, and tests/live's
-# KNOWN BUG case): "neither served a page nor refused --live (status 0)".
+# "row 1 differs in tau1"; with the ratio test's `compare` command before the program refused
+# its --live (tests/live's compare case): "neither served a page nor refused --live (status 0)".
 set -uo pipefail
 program=$1 report=$2 test_name=$3 work=$4 offline_csv=$5 live_csv=$6 default_csv=$7
 shift 7
