@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <opspace/hw2/p4.hpp>
+#include <opspace/math/constants.hpp>
 #include <opspace/scenarios.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/visuals/p4.hpp>
@@ -117,7 +118,7 @@ std::string reach(const p4::Summary& s) {
 }
 
 std::string final_q(const p4::Result& r) {
-  return r.samples.empty() ? "-" : vec(r.samples.back().q * 180.0 / 3.14159265358979323846, 1);
+  return r.samples.empty() ? "-" : vec(r.samples.back().q * 180.0 / opspace::kPi, 1);
 }
 
 /// Question v toward `target`: your controller beside the grader's bounds and the reference,
@@ -143,7 +144,7 @@ void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain
   table.shown("torques clamped to limits", static_cast<double>(s.clamped_steps), static_cast<double>(ref.clamped_steps),
               cli::kJointSteps);
   table.row("final joint angles (deg)", final_q(mine), "not graded",
-            vec(reference::p4_final_q(target) * 180.0 / 3.14159265358979323846, 1));
+            vec(reference::p4_final_q(target) * 180.0 / opspace::kPi, 1));
   table.print(std::cout, "bash scripts/grade --problem 4 says which test and why");
   const p4::Summary& p = plain.summary;
   std::cout << "the plain controller from the same start (the library's, not yours): reached " << reach(p)

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <opspace/hw2/p1b.hpp>
+#include <opspace/math/constants.hpp>
 #include <opspace/scenarios.hpp>
 #include <opspace/model/urdf.hpp>
 
@@ -25,7 +26,7 @@ namespace {
 
 using cli::show;
 
-constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+constexpr double kDegPerRad = 180.0 / opspace::kPi;
 const cli::Unit kMrad{"mrad", 1e3};
 
 std::string fixed(double v, int decimals) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <opspace/math/constants.hpp>
+
 namespace cli {
 
 /// How a quantity is shown: its SI value times `scale`, followed by `name`.
@@ -16,7 +18,7 @@ struct Unit {
 };
 inline constexpr Unit kMm{"mm", 1e3};
 inline constexpr Unit kRad{"rad", 1.0};
-inline constexpr Unit kDegrees{"deg", 180.0 / 3.14159265358979323846};
+inline constexpr Unit kDegrees{"deg", 180.0 / opspace::kPi};
 inline constexpr Unit kNewton{"N", 1.0};
 inline constexpr Unit kNewtonMetre{"N m", 1.0};
 inline constexpr Unit kSeconds{"s", 1.0};

@@ -6,6 +6,7 @@
 // - the behaviour: the closed loop on the Bullet simulation, with bounds whose reasons are
 //   given beside them, measured only on the problem set's law: every tick of the run is
 //   compared with the law's oracle at the same State and Goal (law_pin.hpp).
+#include <opspace/math/constants.hpp>
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/scenarios.hpp>
 #include <opspace/scenarios/graded.hpp>
@@ -33,8 +34,6 @@ using hw2::p2::Vector6d;
 using hw2::p2::Vector7d;
 using testing::problem_set_xddot_d;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 // Closed forms evaluated in another order differ by round-off (~1e-15); a wrong coefficient
 // or term changes the result at order 0.01-1. 1e-9 separates the two.
 constexpr double kFormulaTol = 1e-9;

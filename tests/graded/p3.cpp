@@ -5,6 +5,7 @@
 // - the behaviour: the closed loop on the Bullet simulation with the plane x = 0.05, with
 //   bounds whose reasons are given beside them, measured only on the problem set's law: every
 //   tick of the run is compared with the law's oracle at the same State and Goal (law_pin.hpp).
+#include <opspace/math/constants.hpp>
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/scenarios.hpp>
 #include <opspace/scenarios/graded.hpp>
@@ -29,8 +30,6 @@ using hw2::p3::Matrix6d;
 using hw2::p3::Vector6d;
 using hw2::p3::Vector7d;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 // The law is a few products of 6x6 and 7x7 matrices: round-off ~1e-13 relative. 1e-6 accepts
 // any correct arrangement and rejects every wrong term, which changes tau at order 1.
 constexpr double kLawTol = 1e-6;

@@ -6,6 +6,7 @@
 //   closed loop on the Bullet simulation, beside the plain operational-space controller,
 //   measured only on the problem set's law: every tick of the run is compared with the law's
 //   oracle at the same State and Goal (law_pin.hpp).
+#include <opspace/math/constants.hpp>
 #include <opspace/scenarios.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
@@ -29,8 +30,6 @@ using hw2::p4::Kinematics;
 using hw2::p4::Target;
 using opspace::SingularityType;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 // Directions come from 3x3 SVDs: round-off ~1e-15. At these configurations the vanishing
 // singular values are round-off and the others at least ~0.1, so any correct method returns
 // the subspaces to ~1e-12; 1e-8 accepts them all and rejects every wrong subspace (whose

@@ -1,6 +1,6 @@
 // The robot catalogue (opspace/model/catalogue.hpp): every entry loads and its task point is on
 // its named link, and each named configuration puts the robot where the problem set and
-// robots.md say it starts, and the scenarios use the same. Each expected number is the
+// robots.md say it starts (the scenarios read these). Each expected number is the
 // course's, never one this code printed.
 #include <doctest/doctest.h>
 
@@ -13,7 +13,6 @@
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/math/constants.hpp"
 #include "opspace/model/catalogue.hpp"
-#include "opspace/scenarios.hpp"
 
 using namespace opspace;
 namespace cat = opspace::catalogue;
@@ -122,23 +121,4 @@ TEST_CASE("the 3R arm's singular configuration stands it straight up, moving alo
   CAPTURE(Jv);
   CHECK(Jv.bottomRows<2>().norm() < 1e-12);
   CHECK(Jv.row(0).norm() > 0.1);  // a lever arm of link lengths (0.5 m each), not rounding
-}
-
-TEST_CASE("the scenarios use the catalogue's robots, tips and starts, to the bit") {
-  // Until the scenarios read the catalogue, they write the same numbers by the same
-  // expressions: equal doubles, so that the explorer, the benchmarks and the runs agree.
-  namespace sc = opspace::scenarios;
-  CHECK(std::string(sc::p1b::kRobotFile) == cat::kPuma.file);
-  CHECK(std::string(sc::p1b::kTipLink) == cat::kPuma.tip_link);
-  CHECK(sc::p1b::tip_point() == cat::tip_point(cat::kPuma));
-  CHECK(sc::p1b::initial_q() == cat::puma_start_q());
-  CHECK(std::string(sc::p2::kRobotFile) == cat::kIiwa.file);
-  CHECK(std::string(sc::p2::kTipLink) == cat::kIiwa.tip_link);
-  CHECK(sc::p2::initial_q() == cat::iiwa_start_q());
-  CHECK(std::string(sc::p3::kRobotFile) == cat::kIiwa.file);
-  CHECK(std::string(sc::p3::kTipLink) == cat::kIiwa.tip_link);
-  CHECK(std::string(sc::p4::kRobotFile) == cat::kRRR.file);
-  CHECK(std::string(sc::p4::kTipLink) == cat::kRRR.tip_link);
-  CHECK(sc::p4::tip_point() == cat::tip_point(cat::kRRR));
-  CHECK(sc::p4::singular_q() == cat::rrr_singular_q());
 }

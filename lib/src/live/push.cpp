@@ -6,12 +6,11 @@
 #include <string>
 
 #include "opspace/algorithms/dynamics.hpp"
+#include "opspace/math/constants.hpp"
 
 namespace opspace::live {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // 3 / trace(Jv A^-1 Jv^T) with A = L L^T factored in `llt`: the trace is the squared norm of
 // Y = L^-1 Jv^T (Y: a workspace, no allocation once sized).

@@ -5,7 +5,6 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/scenarios.hpp"
 #include "opspace/simulation/simulation.hpp"
-#include "opspace/model/urdf.hpp"
 #include "observe.hpp"
 
 namespace opspace::scenarios::p1b {
@@ -69,9 +68,9 @@ SimulationSettings Scenario::settings() {
   return settings;
 }
 
-Eigen::Vector3d tip_point() { return Eigen::Vector3d(-0.2, 0.0, 0.0); }
+Eigen::Vector3d tip_point() { return catalogue::tip_point(catalogue::kPuma); }
 
-Vector6d initial_q() { return (Vector6d() << 90.0, -22.5, 180.0, 90.0, 100.0, 180.0).finished() * kDeg; }
+Vector6d initial_q() { return catalogue::puma_start_q(); }
 
 double desired_q2(double t) { return -kPi / 8.0 + kPi / 8.0 * std::sin(2.0 * kPi * t / 10.0); }
 

@@ -8,7 +8,6 @@
 #include "opspace/algorithms/euler_params.hpp"
 #include "opspace/scenarios.hpp"
 #include "opspace/simulation/simulation.hpp"
-#include "opspace/model/urdf.hpp"
 #include "observe.hpp"
 
 namespace opspace::scenarios::p2 {
@@ -80,9 +79,7 @@ std::vector<double> Scenario::csv_row(const Sample& s) const {
   return row;
 }
 
-Vector7d initial_q() {
-  return (Vector7d() << 125.9, 39.2, -49.2, 70.0, -62.4, 80.2, -172.8).finished() * kDeg;
-}
+Vector7d initial_q() { return catalogue::iiwa_start_q(); }
 
 Reference desired(double t) {
   const double w = 2.0 * kPi / 5.0;

@@ -43,9 +43,9 @@ std::vector<double> Scenario::csv_row(const Sample& s) const {
           (s.x - x_d).norm(), s.q(0), s.q(1), s.q(2), s.tau(0), s.tau(1), s.tau(2)};
 }
 
-Eigen::Vector3d tip_point() { return Eigen::Vector3d::Zero(); }
+Eigen::Vector3d tip_point() { return catalogue::tip_point(catalogue::kRRR); }
 
-Eigen::Vector3d singular_q() { return Eigen::Vector3d(0.0, 90.0 * kDeg, 0.0); }
+Eigen::Vector3d singular_q() { return catalogue::rrr_singular_q(); }
 
 Eigen::Vector3d initial_q(Target target) {
   // q2 = 90 deg - q3 / 2 puts the tip exactly above the base: r = L (cos q2 + cos(q2 + q3)) = 0.

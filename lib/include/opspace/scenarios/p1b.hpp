@@ -11,6 +11,7 @@
 
 #include "opspace/hw2/p1b.hpp"
 #include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/catalogue.hpp"
 #include "opspace/model/model.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
@@ -23,8 +24,8 @@ namespace p1b {
 
 using hw2::p1b::Vector6d;
 
-inline constexpr const char* kRobotFile = "puma.urdf";
-inline constexpr const char* kTipLink = "end-effector";
+inline constexpr const char* kRobotFile = catalogue::kPuma.file;
+inline constexpr const char* kTipLink = catalogue::kPuma.tip_link;
 inline constexpr double kSettleTime = 2.0;  ///< errors are measured after this (s)
 /// Speed bound of the run (rad/s): high enough that PART2's wild wrist motion (a few hundred
 /// rad/s) is shown rather than stopped (docs/problem1b.md).

@@ -12,6 +12,7 @@
 #include "opspace/hw2/p2.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/math/constants.hpp"
+#include "opspace/model/catalogue.hpp"
 #include "opspace/model/model.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
@@ -24,8 +25,8 @@ namespace p2 {
 
 using hw2::p2::Vector7d;
 
-inline constexpr const char* kRobotFile = "iiwa7.urdf";
-inline constexpr const char* kTipLink = "link7";  ///< operational point: this link's origin
+inline constexpr const char* kRobotFile = catalogue::kIiwa.file;
+inline constexpr const char* kTipLink = catalogue::kIiwa.tip_link;  ///< operational point: this link's origin
 inline constexpr double kSettleTime = 1.0;        ///< errors are measured after this (s)
 inline constexpr double kPeriod = 5.0;            ///< period of the desired trajectory (s)
 inline constexpr double kDefaultDuration = 10.0;  ///< two periods of the trajectory (s)
@@ -55,7 +56,7 @@ inline constexpr double kLambdaStepMax = 0.01;
 /// and the simulation does not enforce limits; a correct law drives the reference's joint path,
 /// whose joint 1 passes its 170 deg limit by about 2 deg at the far end of the y sweep
 /// (docs/problem2.md). 5 deg allows that and flags an arm that swings away from that path.
-inline constexpr double kJointLimitExcessMax = 5.0 * kPi / 180.0;
+inline constexpr double kJointLimitExcessMax = 5.0 * kDeg;
 /// Joint drift over the last period, Summary::joint_drift_per_period (rad). N0^T A (-kvj dq)
 /// damps the self-motion at rate kvj = 20 /s, so the joints repeat their motion every period
 /// up to a slow geometric drift (under a degree); undamped, the self-motion wanders by tens of

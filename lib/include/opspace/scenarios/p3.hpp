@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "opspace/model/catalogue.hpp"
 #include "opspace/hw2/p3.hpp"
 #include "opspace/math/constants.hpp"
 #include "opspace/scenarios/p2.hpp"
@@ -25,8 +26,8 @@ namespace p3 {
 using hw2::p3::Vector6d;
 using hw2::p3::Vector7d;
 
-inline constexpr const char* kRobotFile = "iiwa7.urdf";
-inline constexpr const char* kTipLink = "link7";  ///< operational point and tool: this link
+inline constexpr const char* kRobotFile = catalogue::kIiwa.file;
+inline constexpr const char* kTipLink = catalogue::kIiwa.tip_link;  ///< operational point and tool: this link
 inline constexpr double kPlaneX = 0.05;           ///< the plane's position along x (m)
 inline constexpr double kPushForce = 10.0;        ///< desired F_x (N)
 inline constexpr double kSettleTime = 1.0;        ///< errors are measured after this (s)
@@ -47,7 +48,7 @@ inline constexpr double kForceErrorMeanMax = 1.0;
 /// commanded about y and z, the disc tilts only as far as the solver lets its rim sink in
 /// (thousandths of a degree). 0.5 deg would lift the opposite rim of the 0.08 m disc 0.35 mm
 /// off the plane: not flat any more.
-inline constexpr double kTiltMax = 0.5 * kPi / 180.0;
+inline constexpr double kTiltMax = 0.5 * kDeg;
 /// RMS |(y - y_d, z - z_d)| (m). As in problem 2 (p2::kPositionErrorRmsMax): without the
 /// feed-forward acceleration the PD lags y_d and z_d by 3.9 mm RMS (closed form); with it only
 /// the uncompensated Coriolis forces remain (tenths of a mm). 1 mm separates the two.

@@ -11,6 +11,7 @@
 
 #include "opspace/hw2/p4.hpp"
 #include "opspace/algorithms/kinematics.hpp"
+#include "opspace/model/catalogue.hpp"
 #include "opspace/model/model.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
@@ -23,8 +24,8 @@ namespace p4 {
 
 using hw2::p4::Target;
 
-inline constexpr const char* kRobotFile = "rrr.urdf";
-inline constexpr const char* kTipLink = "end-effector";
+inline constexpr const char* kRobotFile = catalogue::kRRR.file;
+inline constexpr const char* kTipLink = catalogue::kRRR.tip_link;
 /// Relative eigenvalue cut-off of the State's robust Lambda_v. A direction whose eigenvalue of
 /// Jv A^-1 Jv^T is below 1% of the largest is dropped: the PD force along it would cost
 /// torques of order m kpx |x - x_d| / sigma, beyond the 50 N m limits of the arm for a
