@@ -200,7 +200,8 @@ TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, neve
   CHECK(o.code == 2);
   CHECK(o.err.find("--test needs a value") != std::string::npos);
   // Without --test a seed would be printed and used for nothing.
-  o = p2({"hw2-p2", "--seed", "41"}, options);
+  cli::Options fresh;
+  o = p2({"hw2-p2", "--seed", "41"}, fresh);
   CHECK(o.code == 2);
   CHECK_MESSAGE(o.err.find("'--seed' applies to --test only") != std::string::npos, o.err);
   // compare runs offline: --live is refused, naming it, never ignored (the ratio test's replay).
