@@ -1,6 +1,6 @@
 /// @file problems.hpp
 /// The problems and their student functions, as X-macros: a problem's functions are listed in
-/// one table (functions_p1a.hpp ... functions_p4.hpp) and the problems once, in problems.txt at
+/// one table (its folder's functions.hpp: problems/1a/functions.hpp ...) and the problems once, in problems.txt at
 /// the top of the repository, from which the build generates the macros below. Everything
 /// that names every function is derived from these rows, never written again:
 ///   - the protocol's codes (protocol.hpp: Function, kFunctions);
@@ -25,7 +25,7 @@
 /// problem, in the list's order: the contract's namespace (hw2::problem, and the problem's member
 /// of Hw2Api), the name of its slots' struct (ProblemApi), its key (as the report and the command
 /// line write it), the high byte of its codes (the key read in hexadecimal) and its table
-/// (functions_p<key>.hpp's OPSPACE_P<KEY>_FUNCTIONS). `arg` is handed to every P unchanged, so
+/// (problems/<key>/functions.hpp's OPSPACE_P<KEY>_FUNCTIONS). `arg` is handed to every P unchanged, so
 /// that a P can pass it on to FUNCTIONS (as OPSPACE_FUNCTIONS does). For problem 1a:
 ///   P(arg, p1a, P1a, "1a", 0x1a, OPSPACE_P1A_FUNCTIONS)
 ///

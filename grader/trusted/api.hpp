@@ -16,7 +16,7 @@ namespace opspace::grading {
 template <class F>
 using Fn = std::function<F>;
 
-/// Each problem's slots, one per row of its table (protocol/functions_p*.hpp): P1aApi ...
+/// Each problem's slots, one per row of its table (problems/<key>/functions.hpp): P1aApi ...
 /// P4Api, each member named as the contract's function, e.g. P1bApi::control.
 #define OPSPACE_SLOT(problem, code, Code, name) Fn<decltype(hw2::problem::name)> name;
 #define OPSPACE_PROBLEM_API(arg, problem, Problem, key, byte, FUNCTIONS) \

@@ -9,7 +9,7 @@
 
 namespace opspace::grading::oracle {
 
-/// Problem 1b: the torque of `part` (tests/graded/p1b.cpp).
+/// Problem 1b: the torque of `part` (problems/1b/graded.cpp).
 hw2::p1b::Vector6d law_1b(hw2::p1b::Part part, const hw2::p1b::State& s, const hw2::p1b::Goal& goal);
 /// Problem 2(c): the tracking law (p2.cpp).
 hw2::p2::Vector7d law_2(const hw2::p2::State& s, const hw2::p2::Goal& goal);

@@ -16,7 +16,7 @@
 
 namespace opspace::grading {
 
-/// How CMake compiles and links a runner (the file tests/graded/CMakeLists.txt generates).
+/// How CMake compiles and links a runner (the file grader/CMakeLists.txt generates).
 struct Toolchain {
   std::vector<std::string> compile;  ///< compiler and flags; the grader adds -c FILE -o OBJECT
   std::vector<std::string> link;     ///< compiler and flags; the grader adds OBJECT, the inputs, -o

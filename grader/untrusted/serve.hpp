@@ -22,13 +22,13 @@ void serve(R (*fn)(A...), protocol::Reader& in, protocol::Writer& out) {
 }
 
 /// This runner's problem: evaluates `function` (false if it is not one of this problem's).
-/// Defined once per problem (serve_p1a.cpp, ...), by OPSPACE_RUNNER_DISPATCH.
+/// Defined once per problem (problems/1a/serve.cpp, ...), by OPSPACE_RUNNER_DISPATCH.
 bool dispatch(protocol::Function function, protocol::Reader& in, protocol::Writer& out);
 
 }  // namespace opspace::runner
 
 /// Defines dispatch (inside namespace opspace::runner) for the problem whose table is FUNCTIONS
-/// (e.g. OPSPACE_P1A_FUNCTIONS, protocol/functions_p1a.hpp): one case per row, serving the
+/// (e.g. OPSPACE_P1A_FUNCTIONS, problems/1a/functions.hpp): one case per row, serving the
 /// contract's function of that name. It names only this problem's functions: a runner links
 /// one exercise file.
 #define OPSPACE_RUNNER_DISPATCH(FUNCTIONS)                                                 \

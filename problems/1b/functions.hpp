@@ -1,6 +1,6 @@
-/// @file functions_p1b.hpp
+/// @file problems/1b/functions.hpp
 /// Problem 1b's student functions (lib/include/opspace/hw2/p1b.hpp), one row each: the only
-/// list of them. problems.hpp says what is derived from the rows and how; functions_p1a.hpp
+/// list of them. problems.hpp says what is derived from the rows and how; problems/1a/functions.hpp
 /// what a row holds.
 #pragma once
 

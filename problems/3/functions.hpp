@@ -1,6 +1,6 @@
-/// @file functions_p3.hpp
+/// @file problems/3/functions.hpp
 /// Problem 3's student functions (lib/include/opspace/hw2/p3.hpp), one row each: the only list
-/// of them. problems.hpp says what is derived from the rows and how; functions_p1a.hpp what a
+/// of them. problems.hpp says what is derived from the rows and how; problems/1a/functions.hpp what a
 /// row holds.
 #pragma once
 

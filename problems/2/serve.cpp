@@ -1,5 +1,5 @@
 // Runner of problem 2: the functions of exercises/p2.cpp (lib/include/opspace/hw2/p2.hpp).
-#include "serve.hpp"
+#include "untrusted/serve.hpp"
 
 namespace opspace::runner {
 

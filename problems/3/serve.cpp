@@ -1,5 +1,5 @@
 // Runner of problem 3: the functions of exercises/p3.cpp (lib/include/opspace/hw2/p3.hpp).
-#include "serve.hpp"
+#include "untrusted/serve.hpp"
 
 namespace opspace::runner {
 

@@ -1,5 +1,5 @@
 // Runner of problem 1b: the control law of exercises/p1b.cpp (lib/include/opspace/hw2/p1b.hpp).
-#include "serve.hpp"
+#include "untrusted/serve.hpp"
 
 namespace opspace::runner {
 

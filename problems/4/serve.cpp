@@ -1,5 +1,5 @@
 // Runner of problem 4: the functions of exercises/p4.cpp (lib/include/opspace/hw2/p4.hpp).
-#include "serve.hpp"
+#include "untrusted/serve.hpp"
 
 namespace opspace::runner {
 

@@ -1,5 +1,5 @@
 // Runner of problem 1a: the functions of exercises/p1a.cpp (lib/include/opspace/hw2/p1a.hpp).
-#include "serve.hpp"
+#include "untrusted/serve.hpp"
 
 namespace opspace::runner {
 

@@ -1,4 +1,4 @@
-/// @file functions_p1a.hpp
+/// @file problems/1a/functions.hpp
 /// Problem 1a's student functions (lib/include/opspace/hw2/p1a.hpp), one row each: the only
 /// list of them. problems.hpp says what is derived from the rows and how.
 ///
