@@ -92,7 +92,7 @@ void print_summary(Part part, const p1b::Result& r, double duration, const std::
 }
 
 /// With --test: the final values of the series the graded tests read of `part`'s run, named as
-/// the report's figures name them (tests/graded/p1b.cpp).
+/// the report's figures name them (problems/1b/graded.cpp).
 void print_finals(const cli::Options& options, Part part, const p1b::Result& r) {
   if (r.samples.empty()) return;
   const std::string name = part == Part::kTipPd ? "PART1" : part == Part::kPseudoInverseNullspace ? "PART2" : "PART3";

@@ -81,7 +81,7 @@ void print_summary(const p2::Result& r, double duration, const std::string& csv)
   cli::print_summary_end(r, csv);
 }
 
-/// With --test: the values the report's figures end with (tests/graded/p2.cpp).
+/// With --test: the values the report's figures end with (problems/2/graded.cpp).
 void print_finals(const cli::Options& options, const p2::Result& r) {
   const p2::Sample& last = r.samples.back();
   cli::print_final(options, "position error |x_p - x_pd|", p2::position_error(last), "m");

@@ -87,7 +87,7 @@ void print_summary(const p3::Result& r, double duration, const std::string& csv)
   cli::print_summary_end(r, csv);
 }
 
-/// With --test: the values the report's figures end with (tests/graded/p3.cpp).
+/// With --test: the values the report's figures end with (problems/3/graded.cpp).
 void print_finals(const cli::Options& options, const p3::Result& r) {
   const p3::Sample& last = r.samples.back();
   cli::print_final(options, "force error |F_x - 10 N|", p3::force_error(last), "N");

@@ -203,7 +203,7 @@ int main(int argc, char** argv) {
       const p4::Result plain = p4::run_plain(target, options.run);
       side_by_side(target, mine, plain, options.run.duration);
       std::cout << "  logs: " << prefix << ".csv, " << prefix << "-plain.csv\n";
-      // --test: the value the report's figure ends with (tests/graded/p4.cpp)
+      // --test: the value the report's figure ends with (problems/4/graded.cpp)
       if (!mine.samples.empty())
         cli::print_final(options, "tip error |x - x_d| " + p4::describe(target), p4::tip_error(target, mine.samples.back()), "m");
       // After the runs: drawing never slows the control loop.

@@ -130,9 +130,11 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
   out << "Total: " << format_points(total) << " / " << format_points(total_max) << " points";
   if (hidden_tests > 0) out << " in the tests shown (" << hidden_note(hidden_tests, hidden_points) << ")";
   out << "\n";
-  if (total == 0.0 && hidden_tests == 0 && problems.size() > 1 && problems.front().problem->key == "1a") {
-    out << "Where to start: open exercises/p1a.cpp (the PP robot's formulas, guide docs/problem1a.md)\n"
-        << "and grade it alone: bash scripts/grade --problem 1a\n";
+  // Nothing earned in a whole grading: the first problem of the list is where to begin.
+  if (total == 0.0 && hidden_tests == 0 && problems.size() > 1) {
+    const Problem& first = *problems.front().problem;
+    out << "Where to start: open exercises/p" << first.key << ".cpp (" << first.title << "; guide docs/problem" << first.key
+        << ".md)\nand grade it alone: bash scripts/grade --problem " << first.key << "\n";
   }
 }
 

@@ -86,7 +86,7 @@ std::vector<Mistake> mistakes_2() {
   const std::vector<std::string> law_and_run = {law, position, orientation, continuous, limits, drift};
   return {
       // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation
-      // (closed forms in tests/graded/p2.cpp); the arm still moves as it should otherwise.
+      // (closed forms in problems/2/graded.cpp); the arm still moves as it should otherwise.
       {"no feed-forward acceleration [vdot_d; wdot_d]",
        "the command is -kpx e - kvx (edot) + [vdot_d; wdot_d], with [vdot_d; wdot_d] = E^+ xddot_d from 2(b)",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_feed_forward>; },

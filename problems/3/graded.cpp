@@ -196,7 +196,7 @@ void yz_tracking(const Hw2Api& api, Check& check) {
   const p3::Result* ran = ran_the_law(api, check);
   if (!ran) return;
   const p3::Result& r = *ran;
-  // As in problem 2 (tests/graded/p2.cpp): without the feed-forward acceleration the PD lags
+  // As in problem 2 (problems/2/graded.cpp): without the feed-forward acceleration the PD lags
   // y_d and z_d by 3.9 mm RMS (closed form); with it only the uncompensated Coriolis forces
   // remain (0.27 mm RMS on the reference). 1 mm separates the two.
   check.at_most("RMS |(y - y_d, z - z_d)| after 1 s", r.summary.yz_error_rms, p3::kYzErrorRmsMax,

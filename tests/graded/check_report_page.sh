@@ -6,7 +6,7 @@
 #      attributes: the student's tip error passes the 5 mm bound after 2 s, the reference's (the
 #      problem set's law in the same scenario) stays within it. Why each must hold: with J+ the
 #      null-space torque leaves Jv^T (Jbar_v - Jv+)^T g on the tip, tens of newtons at these poses
-#      (tests/graded/p1b.cpp), while the dynamically consistent law leaves none: the reference's
+#      (problems/1b/graded.cpp), while the dynamically consistent law leaves none: the reference's
 #      tip stays at the mm scale (0.7 mm at most on this scenario), the mutant's moves hundreds;
 #   2. the text report names the replay command of that test and ends with "open ...";
 #      running the command on hw2-p1 linked with the same file prints the final tip error the

@@ -47,6 +47,13 @@ endif()
 if(NOT out MATCHES "\nTotal: 0 / [0-9.]+ points")
   message(FATAL_ERROR "the untouched stubs earned points; a test that a stub passes cannot fail:\n${out}")
 endif()
+# A grading that earned nothing names the first problem of problems.txt as where to start.
+file(STRINGS "${CMAKE_CURRENT_LIST_DIR}/../../problems.txt" listed REGEX "^[0-9a-f]")
+list(GET listed 0 first)
+string(REGEX REPLACE "[ \t].*" "" first "${first}")
+if(NOT out MATCHES "Where to start: open exercises/p${first}\\.cpp \\([^\n]+; guide docs/problem${first}\\.md\\)\nand grade it alone: bash scripts/grade --problem ${first}\n")
+  message(FATAL_ERROR "the stubs' report does not say to start with problem ${first}, the first of problems.txt:\n${out}")
+endif()
 if(WORK)
   execute_process(COMMAND ${CMAKE_COMMAND} -DJSON=${WORK}/results.json -P ${CMAKE_CURRENT_LIST_DIR}/check_results_page.cmake
                   RESULT_VARIABLE rc)
