@@ -16,6 +16,7 @@
 #include <memory>
 
 #include "law_pin.hpp"
+#include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
 #include "suite.hpp"

@@ -19,6 +19,7 @@
 #include <map>
 
 #include "law_pin.hpp"
+#include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
 #include "suite.hpp"

@@ -5,6 +5,7 @@
 #include <opspace/hw2/p3.hpp>
 
 #include "mistakes.hpp"
+#include "answers.hpp"
 #include "oracles.hpp"
 
 namespace opspace::grading {
