@@ -3,6 +3,7 @@
 #   OPSPACE_KEYS     the keys, in the list's order (1a 1b ...)
 #   OPSPACE_POINTS   each key's points, in the same order
 #   OPSPACE_TOTAL    their sum
+#   OPSPACE_PROBLEMS the problems' folders' parent (problems/), absolute
 # grader/problems.cmake reads the same list for CMake, and checks its lines.
 OPSPACE_KEYS=() OPSPACE_POINTS=() OPSPACE_TOTAL=0
 while read -r opspace_key opspace_points _; do
@@ -12,3 +13,13 @@ while read -r opspace_key opspace_points _; do
   OPSPACE_TOTAL=$((OPSPACE_TOTAL + opspace_points))
 done < "$(dirname "${BASH_SOURCE[0]}")/../problems.txt"
 unset opspace_key opspace_points
+OPSPACE_PROBLEMS="$(cd "$(dirname "${BASH_SOURCE[0]}")/../problems" && pwd)"
+
+# opspace_stubs_untouched DIR: whether DIR holds each problem's exercise file exactly as shipped
+# (its SHA-256 in problems/<key>/stub.sha256). Exit status 0 if so.
+opspace_stubs_untouched() {
+  local key
+  for key in "${OPSPACE_KEYS[@]}"; do
+    (cd "$1" && sha256sum --quiet -c "$OPSPACE_PROBLEMS/$key/stub.sha256") > /dev/null 2>&1 || return 1
+  done
+}

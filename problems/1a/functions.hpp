@@ -1,5 +1,5 @@
 /// @file problems/1a/functions.hpp
-/// Problem 1a's student functions (lib/include/opspace/hw2/p1a.hpp), one row each: the only
+/// Problem 1a's student functions (problems/1a/contract.hpp), one row each: the only
 /// list of them. problems.hpp says what is derived from the rows and how.
 ///
 /// F(problem, code, Code, name): the contract's namespace (hw2::problem), the protocol code

@@ -1,4 +1,4 @@
-// Runner of problem 1a: the functions of exercises/p1a.cpp (lib/include/opspace/hw2/p1a.hpp).
+// Runner of problem 1a: the functions of exercises/p1a.cpp (problems/1a/contract.hpp).
 #include "untrusted/serve.hpp"
 
 namespace opspace::runner {

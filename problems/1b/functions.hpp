@@ -1,5 +1,5 @@
 /// @file problems/1b/functions.hpp
-/// Problem 1b's student functions (lib/include/opspace/hw2/p1b.hpp), one row each: the only
+/// Problem 1b's student functions (problems/1b/contract.hpp), one row each: the only
 /// list of them. problems.hpp says what is derived from the rows and how; problems/1a/functions.hpp
 /// what a row holds.
 #pragma once

@@ -1,4 +1,4 @@
-// Runner of problem 1b: the control law of exercises/p1b.cpp (lib/include/opspace/hw2/p1b.hpp).
+// Runner of problem 1b: the control law of exercises/p1b.cpp (problems/1b/contract.hpp).
 #include "untrusted/serve.hpp"
 
 namespace opspace::runner {

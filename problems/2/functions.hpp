@@ -1,5 +1,5 @@
 /// @file problems/2/functions.hpp
-/// Problem 2's student functions (lib/include/opspace/hw2/p2.hpp), one row each: the only list
+/// Problem 2's student functions (problems/2/contract.hpp), one row each: the only list
 /// of them. problems.hpp says what is derived from the rows and how; problems/1a/functions.hpp what a
 /// row holds.
 #pragma once

@@ -1,4 +1,4 @@
-// Runner of problem 2: the functions of exercises/p2.cpp (lib/include/opspace/hw2/p2.hpp).
+// Runner of problem 2: the functions of exercises/p2.cpp (problems/2/contract.hpp).
 #include "untrusted/serve.hpp"
 
 namespace opspace::runner {

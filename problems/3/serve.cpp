@@ -1,4 +1,4 @@
-// Runner of problem 3: the functions of exercises/p3.cpp (lib/include/opspace/hw2/p3.hpp).
+// Runner of problem 3: the functions of exercises/p3.cpp (problems/3/contract.hpp).
 #include "untrusted/serve.hpp"
 
 namespace opspace::runner {

@@ -1,5 +1,5 @@
 /// @file problems/4/functions.hpp
-/// Problem 4's student functions (lib/include/opspace/hw2/p4.hpp), one row each: the only list
+/// Problem 4's student functions (problems/4/contract.hpp), one row each: the only list
 /// of them. problems.hpp says what is derived from the rows and how; problems/1a/functions.hpp what a
 /// row holds.
 #pragma once

@@ -1,4 +1,4 @@
-// Runner of problem 4: the functions of exercises/p4.cpp (lib/include/opspace/hw2/p4.hpp).
+// Runner of problem 4: the functions of exercises/p4.cpp (problems/4/contract.hpp).
 #include "untrusted/serve.hpp"
 
 namespace opspace::runner {

@@ -1,30 +1,43 @@
 cmake_minimum_required(VERSION 3.22)
 # Runs the grader on exercises/ and requires a total of 0, provided exercises/ are the stubs
-# as shipped (their SHA-256 sums are in stubs.sha256). Once a student has edited them the
-# check does not apply and is skipped; in CI a mismatch is an error (a stale manifest).
+# as shipped (each problem's SHA-256 sum is in its folder: problems/<key>/stub.sha256). Once a
+# student has edited them the check does not apply and is skipped; in CI a mismatch is an error
+# (a stale manifest).
 #
-#   check:  cmake -DGRADER=<hw2-grade> -DEXERCISES_DIR=exercises -DMANIFEST=tests/graded/stubs.sha256 -P check_stubs.cmake
-#   update: cmake -DEXERCISES_DIR=exercises -DMANIFEST=tests/graded/stubs.sha256 -DWRITE=ON -P tests/graded/check_stubs.cmake
-file(GLOB sources "${EXERCISES_DIR}/*.cpp")
-set(actual "")
-foreach(source IN LISTS sources)
-  file(SHA256 "${source}" hash)
-  get_filename_component(name "${source}" NAME)
-  string(APPEND actual "${hash}  ${name}\n")
+#   check:  cmake -DGRADER=<hw2-grade> -DEXERCISES_DIR=exercises -P tests/graded/check_stubs.cmake
+#   update: cmake -DEXERCISES_DIR=exercises -DWRITE=ON -P tests/graded/check_stubs.cmake
+set(repo "${CMAKE_CURRENT_LIST_DIR}/../..")
+include("${repo}/grader/problems.cmake")
+opspace_read_problems("${repo}/problems.txt")
+set(stale "")
+foreach(key IN LISTS OPSPACE_PROBLEM_KEYS)
+  set(manifest "${repo}/problems/${key}/stub.sha256")
+  set(hash "missing")
+  if(EXISTS "${EXERCISES_DIR}/p${key}.cpp")
+    file(SHA256 "${EXERCISES_DIR}/p${key}.cpp" hash)
+  endif()
+  if(WRITE)
+    file(WRITE "${manifest}" "${hash}  p${key}.cpp\n")
+    message("wrote ${manifest}")
+    continue()
+  endif()
+  set(expected "")
+  if(EXISTS "${manifest}")
+    file(READ "${manifest}" expected)
+  endif()
+  if(NOT expected STREQUAL "${hash}  p${key}.cpp\n")
+    list(APPEND stale "p${key}.cpp")
+  endif()
 endforeach()
-
 if(WRITE)
-  file(WRITE "${MANIFEST}" "${actual}")
-  message("wrote ${MANIFEST}")
   return()
 endif()
 
-file(READ "${MANIFEST}" expected)
-if(NOT actual STREQUAL expected)
+if(stale)
   if("$ENV{CI}" STREQUAL "true")
-    message(FATAL_ERROR "exercises/ differ from the stub manifest ${MANIFEST}.\n"
-      "If a stub was changed on purpose, update the manifest:\n"
-      "  cmake -DEXERCISES_DIR=exercises -DMANIFEST=tests/graded/stubs.sha256 -DWRITE=ON -P tests/graded/check_stubs.cmake")
+    message(FATAL_ERROR "exercises/ differ from the stubs' manifests (problems/<key>/stub.sha256): ${stale}.\n"
+      "If a stub was changed on purpose, update the manifests:\n"
+      "  cmake -DEXERCISES_DIR=exercises -DWRITE=ON -P tests/graded/check_stubs.cmake")
   endif()
   message("SKIPPED: exercises/ have been edited, so the untouched-stub check does not apply")
   return()
@@ -48,9 +61,7 @@ if(NOT out MATCHES "\nTotal: 0 / [0-9.]+ points")
   message(FATAL_ERROR "the untouched stubs earned points; a test that a stub passes cannot fail:\n${out}")
 endif()
 # A grading that earned nothing names the first problem of problems.txt as where to start.
-file(STRINGS "${CMAKE_CURRENT_LIST_DIR}/../../problems.txt" listed REGEX "^[0-9a-f]")
-list(GET listed 0 first)
-string(REGEX REPLACE "[ \t].*" "" first "${first}")
+list(GET OPSPACE_PROBLEM_KEYS 0 first)
 if(NOT out MATCHES "Where to start: open exercises/p${first}\\.cpp \\([^\n]+; guide docs/problem${first}\\.md\\)\nand grade it alone: bash scripts/grade --problem ${first}\n")
   message(FATAL_ERROR "the stubs' report does not say to start with problem ${first}, the first of problems.txt:\n${out}")
 endif()

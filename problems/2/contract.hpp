@@ -1,4 +1,5 @@
-/// @file hw2/p2.hpp
+/// @file opspace/hw2/p2.hpp
+/// (problems/2/contract.hpp, which the build copies where it is included: <opspace/hw2/p2.hpp>)
 /// Problem 2: the KUKA iiwa tracks a position and Euler-parameter orientation trajectory with
 /// decoupled PD control, feed-forward acceleration, null-space damping and gravity
 /// compensation. Declared here, written by the student in exercises/p2.cpp, by the instructor

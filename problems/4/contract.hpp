@@ -1,4 +1,5 @@
-/// @file hw2/p4.hpp
+/// @file opspace/hw2/p4.hpp
+/// (problems/4/contract.hpp, which the build copies where it is included: <opspace/hw2/p4.hpp>)
 /// Problem 4: the singularities of the 3R elbow arm (robots/rrr.urdf), analysed (questions
 /// i-iv) and controlled (question v). Declared here, written by the student in
 /// exercises/p4.cpp, by the instructor in solutions/p4.cpp.

@@ -1,4 +1,5 @@
-/// @file hw2/p3.hpp
+/// @file opspace/hw2/p3.hpp
+/// (problems/3/contract.hpp, which the build copies where it is included: <opspace/hw2/p3.hpp>)
 /// Problem 3: unified motion and force control. The KUKA iiwa pushes 10 N along +x against a
 /// rigid plane at x = 0.05 with zero moment about y and z, while it tracks problem 2's y, z and
 /// rotation about x. Declared here, written by the student in exercises/p3.cpp, by the

@@ -1,4 +1,5 @@
-/// @file hw2/p1a.hpp
+/// @file opspace/hw2/p1a.hpp
+/// (problems/1a/contract.hpp, which the build copies where it is included: <opspace/hw2/p1a.hpp>)
 /// Problem 1a: weighted instantaneous inverse kinematics of the PP robot.
 /// Declared here, written by the student in exercises/p1a.cpp, by the instructor in
 /// solutions/p1a.cpp. Two prismatic joints q = (d1, d2) along X0, masses m1 and m2,
