@@ -8,7 +8,8 @@
 #include <string>
 
 #include <opspace/hw2/p1b.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/1b/scenario.hpp>
+#include <opspace/scenarios/common.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/visuals/p1b.hpp>
 #include <opspace/visuals/visuals.hpp>

@@ -6,7 +6,7 @@
 #include <string>
 
 #include <opspace/hw2/p2.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/2/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/visuals/p2.hpp>
 #include <opspace/visuals/visuals.hpp>

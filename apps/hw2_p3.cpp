@@ -7,7 +7,7 @@
 #include <string>
 
 #include <opspace/hw2/p3.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/3/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/visuals/p3.hpp>
 #include <opspace/visuals/visuals.hpp>

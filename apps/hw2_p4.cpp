@@ -11,7 +11,7 @@
 
 #include <opspace/hw2/p4.hpp>
 #include <opspace/math/constants.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/4/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/visuals/p4.hpp>
 #include <opspace/scenarios/watchdog.hpp>

@@ -20,7 +20,10 @@
 #include <opspace/hw2/p2.hpp>
 #include <opspace/hw2/p3.hpp>
 #include <opspace/hw2/p4.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/1b/scenario.hpp>
+#include <problems/2/scenario.hpp>
+#include <problems/3/scenario.hpp>
+#include <problems/4/scenario.hpp>
 
 #include "reference.hpp"
 

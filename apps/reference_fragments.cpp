@@ -14,7 +14,10 @@
 
 #include <opspace/hw2/p1b.hpp>
 #include <opspace/math/constants.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/1b/scenario.hpp>
+#include <problems/2/scenario.hpp>
+#include <problems/3/scenario.hpp>
+#include <problems/4/scenario.hpp>
 #include <opspace/model/urdf.hpp>
 
 #include "reference.hpp"

@@ -11,7 +11,10 @@
 #include <vector>
 
 #include <opspace/hw2/p4.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/1b/scenario.hpp>
+#include <problems/2/scenario.hpp>
+#include <problems/3/scenario.hpp>
+#include <problems/4/scenario.hpp>
 #include <opspace/model/urdf.hpp>
 
 #include "reference.hpp"
@@ -167,7 +170,10 @@ void write_header(const Runs& runs, const std::string& path) {
          "#include <iterator>\n"
          "#include <vector>\n\n"
          "#include <opspace/hw2/p4.hpp>\n"
-         "#include <opspace/scenarios.hpp>\n\n"
+         "#include <problems/1b/scenario.hpp>\n"
+         "#include <problems/2/scenario.hpp>\n"
+         "#include <problems/3/scenario.hpp>\n"
+         "#include <problems/4/scenario.hpp>\n\n"
          "namespace reference {\n\n";
   out << "/// Simulated seconds of the reference runs.\n"
       << "inline constexpr double kP1bDuration = " << p1b::kDefaultDuration << ";\n"

@@ -5,7 +5,7 @@
 //   given beside them, measured only on the problem set's law: every tick of the run is
 //   compared with the law's oracle at the same State (law_pin.hpp).
 #include <opspace/algorithms/linalg.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/1b/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
 

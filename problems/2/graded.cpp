@@ -8,7 +8,7 @@
 //   compared with the law's oracle at the same State and Goal (law_pin.hpp).
 #include <opspace/math/constants.hpp>
 #include <opspace/algorithms/euler_params.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/2/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
 

@@ -7,7 +7,7 @@
 //   tick of the run is compared with the law's oracle at the same State and Goal (law_pin.hpp).
 #include <opspace/math/constants.hpp>
 #include <opspace/algorithms/euler_params.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/3/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
 

@@ -7,7 +7,7 @@
 //   measured only on the problem set's law: every tick of the run is compared with the law's
 //   oracle at the same State and Goal (law_pin.hpp).
 #include <opspace/math/constants.hpp>
-#include <opspace/scenarios.hpp>
+#include <problems/4/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
 

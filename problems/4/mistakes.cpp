@@ -2,7 +2,7 @@
 // reference solutions, or the grader's oracle).
 #include <opspace/hw2/p4.hpp>
 #include <opspace/algorithms/linalg.hpp>
-#include <opspace/scenarios/p4.hpp>
+#include <problems/4/scenario.hpp>
 
 #include <cmath>
 

@@ -12,7 +12,8 @@
 #include <string>
 #include <thread>
 
-#include "opspace/scenarios.hpp"
+#include "opspace/scenarios/common.hpp"
+#include <problems/1b/scenario.hpp>
 #include "opspace/scenarios/watchdog.hpp"
 
 using namespace opspace;

@@ -7,7 +7,7 @@
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/live/push.hpp"
 #include "opspace/math/constants.hpp"
-#include "opspace/scenarios/p1b.hpp"
+#include <problems/1b/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
 

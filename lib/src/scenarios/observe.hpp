@@ -1,5 +1,5 @@
-// What the Observers of p1b.cpp, p2.cpp and p4.cpp share: the joint-space part of a State, the tip
-// of a point task, and the check of the robot's number of joints.
+// What the problems' Observers (problems/<key>/scenario.cpp) share: the joint-space part of a
+// State, the tip of a point task, and the check of the robot's number of joints.
 #pragma once
 
 #include <stdexcept>

@@ -9,10 +9,10 @@
 #include <string>
 
 #include "opspace/live/loop_lab.hpp"
-#include "opspace/scenarios/p1b.hpp"
-#include "opspace/scenarios/p2.hpp"
-#include "opspace/scenarios/p3.hpp"
-#include "opspace/scenarios/p4.hpp"
+#include <problems/1b/scenario.hpp>
+#include <problems/2/scenario.hpp>
+#include <problems/3/scenario.hpp>
+#include <problems/4/scenario.hpp>
 
 namespace opspace::live {
 

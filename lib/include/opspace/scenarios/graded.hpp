@@ -7,10 +7,10 @@
 /// The scenarios are the problem set's and draw no random input: every seed gives the same run.
 #pragma once
 
-#include "opspace/scenarios/p1b.hpp"
-#include "opspace/scenarios/p2.hpp"
-#include "opspace/scenarios/p3.hpp"
-#include "opspace/scenarios/p4.hpp"
+#include <problems/1b/scenario.hpp>
+#include <problems/2/scenario.hpp>
+#include <problems/3/scenario.hpp>
+#include <problems/4/scenario.hpp>
 
 namespace opspace::scenarios {
 

@@ -8,7 +8,7 @@
 
 #include "opspace/visuals/plot.hpp"
 #include "opspace/visuals/replay.hpp"
-#include "opspace/scenarios/p1b.hpp"
+#include <problems/1b/scenario.hpp>
 
 namespace opspace::scenarios::p1b {
 

@@ -6,7 +6,7 @@
 
 #include "opspace/visuals/plot.hpp"
 #include "opspace/visuals/replay.hpp"
-#include "opspace/scenarios/p2.hpp"
+#include <problems/2/scenario.hpp>
 
 namespace opspace::scenarios::p2 {
 

@@ -8,7 +8,7 @@
 
 #include "opspace/visuals/plot.hpp"
 #include "opspace/visuals/replay.hpp"
-#include "opspace/scenarios/p3.hpp"
+#include <problems/3/scenario.hpp>
 
 namespace opspace::scenarios::p3 {
 

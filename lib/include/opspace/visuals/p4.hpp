@@ -7,7 +7,7 @@
 
 #include "opspace/visuals/plot.hpp"
 #include "opspace/visuals/replay.hpp"
-#include "opspace/scenarios/p4.hpp"
+#include <problems/4/scenario.hpp>
 
 namespace opspace::scenarios::p4 {
 

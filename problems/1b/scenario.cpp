@@ -3,9 +3,9 @@
 #include "opspace/math/constants.hpp"
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/algorithms/dynamics.hpp"
-#include "opspace/scenarios.hpp"
+#include <problems/1b/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
-#include "observe.hpp"
+#include "../../lib/src/scenarios/observe.hpp"
 
 namespace opspace::scenarios::p1b {
 

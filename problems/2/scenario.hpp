@@ -1,4 +1,4 @@
-/// @file scenarios/p2.hpp
+/// @file problems/2/scenario.hpp
 /// Problem 2: the KUKA iiwa tracks a position and Euler-parameter orientation trajectory
 /// (numbers from shared robots.md and the problem set), and its closed-loop run on the
 /// simulation.

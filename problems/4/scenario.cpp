@@ -3,11 +3,11 @@
 #include "opspace/math/constants.hpp"
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/algorithms/dynamics.hpp"
-#include "opspace/scenarios.hpp"
+#include <problems/4/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/algorithms/singularity.hpp"
 #include "opspace/model/urdf.hpp"
-#include "observe.hpp"
+#include "../../lib/src/scenarios/observe.hpp"
 
 namespace opspace::scenarios::p4 {
 

@@ -5,7 +5,7 @@
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/algorithms/euler_params.hpp"
 #include "opspace/algorithms/linalg.hpp"
-#include "opspace/scenarios.hpp"
+#include <problems/3/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
 

@@ -6,9 +6,9 @@
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/euler_params.hpp"
-#include "opspace/scenarios.hpp"
+#include <problems/2/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
-#include "observe.hpp"
+#include "../../lib/src/scenarios/observe.hpp"
 
 namespace opspace::scenarios::p2 {
 

@@ -1,4 +1,4 @@
-/// @file scenarios/p4.hpp
+/// @file problems/4/scenario.hpp
 /// Problem 4: the 3R elbow arm near its singular pose theta = (0, 90 deg, 0) (problem set,
 /// shared robots.md), the kinematics of questions i-iv, and question v's closed-loop runs on
 /// the simulation, with the student's controller or the plain operational-space controller.

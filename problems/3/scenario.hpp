@@ -1,4 +1,4 @@
-/// @file scenarios/p3.hpp
+/// @file problems/3/scenario.hpp
 /// Problem 3: the KUKA iiwa pushes 10 N along +x against a rigid plane at x = 0.05 (zero
 /// moment about y and z) while it tracks problem 2's y, z and rotation about x (numbers from
 /// shared robots.md and the problem set), and its closed-loop run on the simulation.
@@ -17,7 +17,7 @@
 #include "opspace/model/catalogue.hpp"
 #include "opspace/hw2/p3.hpp"
 #include "opspace/math/constants.hpp"
-#include "opspace/scenarios/p2.hpp"
+#include <problems/2/scenario.hpp>
 
 namespace opspace::scenarios {
 

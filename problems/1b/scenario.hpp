@@ -1,4 +1,4 @@
-/// @file scenarios/p1b.hpp
+/// @file problems/1b/scenario.hpp
 /// Problem 1b: the PUMA 560 holds its tip while joint 2 moves in the null space (numbers
 /// from shared robots.md and the problem set), and its closed-loop run on the simulation.
 #pragma once
