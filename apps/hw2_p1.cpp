@@ -11,7 +11,7 @@
 #include <problems/1b/scenario.hpp>
 #include <opspace/scenarios/common.hpp>
 #include <opspace/scenarios/graded.hpp>
-#include <opspace/visuals/p1b.hpp>
+#include <problems/1b/pictures.hpp>
 #include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"

@@ -9,7 +9,7 @@
 #include <opspace/hw2/p3.hpp>
 #include <problems/3/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
-#include <opspace/visuals/p3.hpp>
+#include <problems/3/pictures.hpp>
 #include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"

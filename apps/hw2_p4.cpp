@@ -13,7 +13,7 @@
 #include <opspace/math/constants.hpp>
 #include <problems/4/scenario.hpp>
 #include <opspace/scenarios/graded.hpp>
-#include <opspace/visuals/p4.hpp>
+#include <problems/4/pictures.hpp>
 #include <opspace/scenarios/watchdog.hpp>
 #include <opspace/visuals/visuals.hpp>
 #include <opspace/model/urdf.hpp>

@@ -1,4 +1,4 @@
-#include "opspace/visuals/p3.hpp"
+#include <problems/3/pictures.hpp>
 
 #include <string>
 

@@ -1,4 +1,4 @@
-/// @file visuals/p4.hpp
+/// @file problems/4/pictures.hpp
 /// The pictures of a problem-4 run (docs/visuals.md): question v's controller against the
 /// plain operational-space controller from the same start, and the 3D replay of both.
 #pragma once

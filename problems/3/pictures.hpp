@@ -1,4 +1,4 @@
-/// @file visuals/p3.hpp
+/// @file problems/3/pictures.hpp
 /// Problem 3's plots of a run: the contact force against F_d = 10 N with the moments about y
 /// and z, the tracked y, z and rotation about x against their goals, and the tool's tilt; and
 /// the 3D replay scene: the iiwa, the plane and the arrow of the tool's push.

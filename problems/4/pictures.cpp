@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <string>
 
-#include "opspace/visuals/p4.hpp"
+#include <problems/4/pictures.hpp>
 #include "opspace/model/urdf.hpp"
 #include "opspace/visuals/visuals.hpp"
 

@@ -1,4 +1,4 @@
-#include "opspace/visuals/p1b.hpp"
+#include <problems/1b/pictures.hpp>
 
 #include <string>
 

@@ -1,4 +1,4 @@
-/// @file visuals/p2.hpp
+/// @file problems/2/pictures.hpp
 /// The pictures of a problem-2 run (docs/visuals.md): plots and the 3D replay scene.
 #pragma once
 

@@ -1,4 +1,4 @@
-/// @file visuals/p1b.hpp
+/// @file problems/1b/pictures.hpp
 /// Problem 1b's pictures of a run: the plots (tip against its target, tracking errors, joint
 /// 2 against q_d, torques against the URDF effort limits), the 3D replay scene, and the
 /// PART2-against-PART3 drift comparison that is the lesson of the problem.

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <string>
 
-#include "opspace/visuals/p2.hpp"
+#include <problems/2/pictures.hpp>
 #include "opspace/model/urdf.hpp"
 #include "opspace/visuals/visuals.hpp"
 
