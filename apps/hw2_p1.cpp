@@ -20,7 +20,7 @@
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
-#include <opspace/live/labs.hpp>
+#include <problems/1b/lab.hpp>
 #endif
 
 namespace {

@@ -16,7 +16,7 @@
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
-#include <opspace/live/labs.hpp>
+#include <problems/2/lab.hpp>
 #endif
 
 namespace {

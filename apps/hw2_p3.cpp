@@ -17,7 +17,7 @@
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
-#include <opspace/live/labs.hpp>
+#include <problems/3/lab.hpp>
 #endif
 
 namespace {

@@ -23,7 +23,7 @@
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
-#include <opspace/live/labs.hpp>
+#include <problems/4/lab.hpp>
 
 #include "live.hpp"
 #endif

@@ -1,5 +1,5 @@
-// Problem 1b: the tip's static offset under a push (live/p1b_offset.hpp).
-#include "opspace/live/p1b_offset.hpp"
+// Problem 1b: the tip's static offset under a push (problems/1b/offset.hpp).
+#include <problems/1b/offset.hpp>
 
 #include <Eigen/Cholesky>
 

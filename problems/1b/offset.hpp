@@ -1,4 +1,4 @@
-/// @file live/p1b_offset.hpp
+/// @file problems/1b/offset.hpp
 /// Problem 1b: where a steady push holds the tip (docs/live.md, "What a push does to the tip").
 ///
 /// Under PART3, with an external force F on a point of Jacobian Je, A ddq + b + g = Gamma + Je^T F.

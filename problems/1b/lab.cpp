@@ -1,6 +1,6 @@
-// Problem 1b live (live/labs.hpp).
-#include "opspace/live/labs.hpp"
-#include "opspace/live/p1b_offset.hpp"
+// Problem 1b live (problems/1b/lab.hpp).
+#include <problems/1b/lab.hpp>
+#include <problems/1b/offset.hpp>
 
 namespace opspace::live {
 

@@ -1,8 +1,8 @@
-// Problem 3 live (live/labs.hpp).
+// Problem 3 live (problems/3/lab.hpp).
 #include <algorithm>
 #include <cmath>
 
-#include "opspace/live/labs.hpp"
+#include <problems/3/lab.hpp>
 #include "opspace/math/constants.hpp"
 
 namespace opspace::live {

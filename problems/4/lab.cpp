@@ -1,7 +1,7 @@
-// Problem 4 live (live/labs.hpp).
+// Problem 4 live (problems/4/lab.hpp).
 #include <Eigen/SVD>
 
-#include "opspace/live/labs.hpp"
+#include <problems/4/lab.hpp>
 
 namespace opspace::live {
 

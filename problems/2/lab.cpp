@@ -1,8 +1,8 @@
-// Problem 2 live (live/labs.hpp).
+// Problem 2 live (problems/2/lab.hpp).
 #include <algorithm>
 #include <cmath>
 
-#include "opspace/live/labs.hpp"
+#include <problems/2/lab.hpp>
 #include "opspace/math/constants.hpp"
 
 namespace opspace::live {
