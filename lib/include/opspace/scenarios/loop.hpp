@@ -1,8 +1,8 @@
 /// @file scenarios/loop.hpp
 /// The one closed loop of every problem. A problem describes its scenario once, as a class
-/// (`p1b::Scenario` .. `p4::Scenario`, each in problems/<key>/scenario.hpp); Loop<Scenario> runs
-/// it one tick at a time (the live lab's loop) and run(scenario, options) for a duration (the
-/// programs', the graded tests' and the reference's runs).
+/// (`p<key>::Scenario`, in problems/<key>/scenario.hpp); Loop<Scenario> runs it one tick at a
+/// time (the live lab's loop) and run(scenario, options) for a duration (the programs', the
+/// graded tests' and the reference's runs).
 ///
 /// A Scenario S has
 ///   S::Observer, S::Sample, S::Summary   the State from (t, q, dq), one instant, what a run measured
