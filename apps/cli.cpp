@@ -8,7 +8,6 @@
 #include <sstream>
 #include <filesystem>
 
-#include <opspace/scenarios/graded.hpp>
 #include <opspace/scenarios/watchdog.hpp>
 #include <opspace/visuals/visuals.hpp>
 
@@ -137,9 +136,9 @@ bool watchdog_from_environment(const char* program, Options& options) {
   }
 }
 
-void start_replay(Options& options, const std::string& problem) {
+void start_replay(Options& options, const std::string& problem, double graded_duration) {
   if (options.test.empty()) return;
-  options.run.duration = opspace::scenarios::graded_duration(problem);
+  options.run.duration = graded_duration;
   std::cout << "replaying the graded test \"" << options.test << "\" of problem " << problem << ": its scenario, "
             << options.run.duration << " s as the grader ran it";
   if (options.seed != 0) std::cout << " (seed " << options.seed << ": the simulated scenarios draw no random input)";

@@ -106,11 +106,11 @@ int finish(const Options& options, const std::string& prefix, const Result& resu
   return result.failure.empty() ? 0 : 1;
 }
 
-/// With --test: sets the run's duration to the graded run's of problem `problem` (its key, as
-/// in problems.txt; scenarios/graded.hpp)
-/// and prints which test the run replays. The simulated scenarios draw no random input, so the
-/// seed names the grading and changes nothing in the run.
-void start_replay(Options& options, const std::string& problem);
+/// With --test: sets the run's duration to `graded_duration`, the graded run's of problem
+/// `problem` (its key, as in problems.txt; its Scenario::kGradedDuration), and prints which test
+/// the run replays. The simulated scenarios draw no random input, so the seed names the grading
+/// and changes nothing in the run.
+void start_replay(Options& options, const std::string& problem, double graded_duration);
 
 /// With --test: "final QUANTITY: VALUE UNIT", VALUE in full (17 digits): the last value of the
 /// report's figure of QUANTITY, which a replay reproduces.

@@ -10,7 +10,6 @@
 #include <opspace/hw2/p1b.hpp>
 #include <problems/1b/scenario.hpp>
 #include <opspace/scenarios/common.hpp>
-#include <opspace/scenarios/graded.hpp>
 #include <problems/1b/pictures.hpp>
 #include <opspace/visuals/visuals.hpp>
 
@@ -174,7 +173,7 @@ int main(int argc, char** argv) {
   if (!command.comparing) return cli::run_parsed(argv[0], command.options, program(command.part));
   cli::Options& options = command.options;
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
-  cli::start_replay(options, "1b");
+  cli::start_replay(options, "1b", p1b::Scenario::kGradedDuration);
   options.run.progress = &std::cerr;
   options.run.label = "hw2-p1";
   const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);

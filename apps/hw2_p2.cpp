@@ -7,7 +7,6 @@
 
 #include <opspace/hw2/p2.hpp>
 #include <problems/2/scenario.hpp>
-#include <opspace/scenarios/graded.hpp>
 #include <problems/2/pictures.hpp>
 #include <opspace/visuals/visuals.hpp>
 

@@ -8,7 +8,6 @@
 
 #include <opspace/hw2/p3.hpp>
 #include <problems/3/scenario.hpp>
-#include <opspace/scenarios/graded.hpp>
 #include <problems/3/pictures.hpp>
 #include <opspace/visuals/visuals.hpp>
 

@@ -12,7 +12,6 @@
 #include <opspace/hw2/p4.hpp>
 #include <opspace/math/constants.hpp>
 #include <problems/4/scenario.hpp>
-#include <opspace/scenarios/graded.hpp>
 #include <problems/4/pictures.hpp>
 #include <opspace/scenarios/watchdog.hpp>
 #include <opspace/visuals/visuals.hpp>
@@ -168,7 +167,7 @@ int main(int argc, char** argv) {
   if (code >= 0) return code;
   cli::Options& options = command.options;
   if (!cli::watchdog_from_environment(argv[0], options)) return 2;
-  cli::start_replay(options, "4");
+  cli::start_replay(options, "4", p4::Scenario::kGradedDuration);
   std::cout << "problem 4, 3R elbow arm (" << OPSPACE_GRADED_LIBRARY << ")\n";
   if (options.live) {  // question v toward the first target named (z by default)
 #ifdef OPSPACE_LIVE

@@ -59,7 +59,7 @@ struct ScenarioProgram {
 template <class Scenario>
 int run_parsed(const char* argv0, Options& options, const ScenarioProgram<Scenario>& program) {
   if (!watchdog_from_environment(argv0, options)) return 2;
-  start_replay(options, program.problem);
+  start_replay(options, program.problem, Scenario::kGradedDuration);
   options.run.progress = &std::cerr;
   options.run.label = program.name;
   const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);

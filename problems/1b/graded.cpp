@@ -6,7 +6,6 @@
 //   compared with the law's oracle at the same State (law_pin.hpp).
 #include <opspace/algorithms/linalg.hpp>
 #include <problems/1b/scenario.hpp>
-#include <opspace/scenarios/graded.hpp>
 #include <opspace/model/urdf.hpp>
 
 #include <cmath>
@@ -110,7 +109,7 @@ const Run& run(const Hw2Api& api, Part part) {
   auto it = cache.find(key);
   if (it == cache.end()) {
     scenarios::RunOptions options;
-    options.duration = scenarios::graded_duration("1b");  // as hw2-p1 --test replays it
+    options.duration = scenarios::p1b::Scenario::kGradedDuration;  // as hw2-p1 --test replays it
     Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
     const auto pinned = [control = api.p1b.control, &pin = made.pin](Part p, const hw2::p1b::State& s,
                                                                      const hw2::p1b::Goal& goal) {

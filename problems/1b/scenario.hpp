@@ -33,7 +33,7 @@ inline constexpr double kMaxJointSpeed = 1000.0;
 /// Simulated seconds of the graded runs and of hw2-p1's default run: one period of q_d(t).
 inline constexpr double kDefaultDuration = 10.0;
 
-// The bounds of the graded tests (tests/graded/p1b.cpp), which hw2-p1 also prints beside its
+// The bounds of the graded tests (problems/1b/graded.cpp), which hw2-p1 also prints beside its
 // results. Each applies to a Summary of a kDefaultDuration run (errors after kSettleTime).
 
 /// PART1's tip error RMS (m). The tip starts 2.3 mm from x_d; a tip PD with p holds it to the
@@ -117,6 +117,8 @@ using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 /// rest, each tick tau = control(part, State, goal(t, q)), its torques checked.
 class Scenario {
  public:
+  /// Simulated seconds of each graded run and of a --test replay (one period of q_d).
+  static constexpr double kGradedDuration = kDefaultDuration;
   using Observer = p1b::Observer;
   using Sample = p1b::Sample;
   using Summary = p1b::Summary;
@@ -153,6 +155,13 @@ Result run(hw2::p1b::Part part, Controller control, const RunOptions& options);
 
 /// "PART1: tip PD with joint damping" and so on, for reports.
 std::string describe(hw2::p1b::Part part);
+
+// What the graded simulated tests (problems/1b/graded.cpp) share with the program's replay of
+// one of them (--test NAME --seed N): the series their checks read, sample by sample. The grader
+// plots them (the report's figures); a replay prints their final values, which match the
+// figure's to round-off because both come from these functions applied to the same run.
+double tip_error(const Sample& s);  ///< |x - x_d| (m), x_d the scenario's fixed target
+double q2_error(const Sample& s);   ///< |q2 - q2_d| (rad)
 
 }  // namespace p1b
 

@@ -159,4 +159,9 @@ Result run(Controller control, DesiredAcceleration desired_acceleration, const R
   return scenarios::run(Scenario{std::move(control), std::move(desired_acceleration)}, options);
 }
 
+// The graded tests' series (scenario.hpp).
+double position_error(const Sample& s) { return (s.x_p - s.x_d.head<3>()).norm(); }
+double orientation_angle(const Sample& s) { return rotation_angle_between(s.lambda, s.x_d.tail<4>()); }
+double lambda_dot_lambda_d(const Sample& s) { return s.lambda.dot(s.x_d.tail<4>()); }
+
 }  // namespace opspace::scenarios::p2

@@ -31,7 +31,7 @@ inline constexpr double kSettleTime = 1.0;        ///< errors are measured after
 inline constexpr double kPeriod = 5.0;            ///< period of the desired trajectory (s)
 inline constexpr double kDefaultDuration = 10.0;  ///< two periods of the trajectory (s)
 
-// The bounds of the graded tests (tests/graded/p2.cpp), which hw2-p2 also prints beside its
+// The bounds of the graded tests (problems/2/graded.cpp), which hw2-p2 also prints beside its
 // results. Each applies to a Summary of a kDefaultDuration run.
 
 /// Position error RMS after kSettleTime (m). Without the feed-forward acceleration the PD lags
@@ -149,6 +149,8 @@ using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 /// initial_q() at rest, each tick goal.xddot_d = desired_acceleration(t) (checked finite), then
 /// tau = control(State, goal) checked.
 struct Scenario {
+  /// Simulated seconds of each graded run and of a --test replay (two periods of x_d).
+  static constexpr double kGradedDuration = kDefaultDuration;
   using Observer = p2::Observer;
   using Sample = p2::Sample;
   using Summary = p2::Summary;
@@ -174,6 +176,14 @@ using Loop = scenarios::Loop<Scenario>;
 /// Runs problem 2's scenario: every 1 ms step, goal.xddot_d = desired_acceleration(t), then
 /// tau = control(state, goal).
 Result run(Controller control, DesiredAcceleration desired_acceleration, const RunOptions& options);
+
+// What the graded simulated tests (problems/2/graded.cpp) share with the program's replay of
+// one of them (--test NAME --seed N): the series their checks read, sample by sample. The grader
+// plots them (the report's figures); a replay prints their final values, which match the
+// figure's to round-off because both come from these functions applied to the same run.
+double position_error(const Sample& s);     ///< |x_p - x_pd| (m)
+double orientation_angle(const Sample& s);  ///< the angle of R R_d^T (rad)
+double lambda_dot_lambda_d(const Sample& s);  ///< lambda . lambda_d: lambda flips where it would cross 0
 
 }  // namespace p2
 

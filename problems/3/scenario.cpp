@@ -170,4 +170,11 @@ Result run(Controller control, const RunOptions& options) {
   return scenarios::run(Scenario(std::move(control)), options);
 }
 
+// The graded tests' series (scenario.hpp).
+double force_error(const Sample& s) { return std::abs(s.tool_force.x() - kPushForce); }
+double tilt_angle(const Sample& s) { return s.tilt; }
+double yz_error(const Sample& s) { return (s.x_p.tail<2>() - s.x_d.segment<2>(1)).norm(); }
+double rotation_x_error(const Sample& s) { return std::abs(s.rotation_x_error); }
+double push(const Sample& s) { return s.tool_force.x(); }
+
 }  // namespace opspace::scenarios::p3

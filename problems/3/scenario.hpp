@@ -34,7 +34,7 @@ inline constexpr double kSettleTime = 1.0;        ///< errors are measured after
 inline constexpr double kPeriod = 5.0;            ///< period of the desired trajectory (s)
 inline constexpr double kDefaultDuration = 10.0;  ///< two periods of the trajectory (s)
 
-// The bounds of the graded tests (tests/graded/p3.cpp), which hw2-p3 also prints beside its
+// The bounds of the graded tests (problems/3/graded.cpp), which hw2-p3 also prints beside its
 // results. Each applies to a Summary of a kDefaultDuration run (after kSettleTime).
 
 /// Mean |F_x - 10 N| (N). In contact the plane removes x, and the law's force is
@@ -135,6 +135,8 @@ using Result = RunResult<Sample, Summary>;  ///< what a run recorded
 /// tau = control(State, goal(t)) checked, and the tool's contact with the plane recorded.
 class Scenario {
  public:
+  /// Simulated seconds of each graded run and of a --test replay (two periods of x_d).
+  static constexpr double kGradedDuration = kDefaultDuration;
   using Observer = p3::Observer;
   using Sample = p3::Sample;
   using Summary = p3::Summary;
@@ -162,6 +164,16 @@ using Loop = scenarios::Loop<Scenario>;
 /// Runs problem 3's scenario: the plane at x = 0.05, then every 1 ms step
 /// tau = control(state, goal(t)).
 Result run(Controller control, const RunOptions& options);
+
+// What the graded simulated tests (problems/3/graded.cpp) share with the program's replay of
+// one of them (--test NAME --seed N): the series their checks read, sample by sample. The grader
+// plots them (the report's figures); a replay prints their final values, which match the
+// figure's to round-off because both come from these functions applied to the same run.
+double force_error(const Sample& s);       ///< |F_x - kPushForce| (N)
+double tilt_angle(const Sample& s);        ///< the tool's tilt against the plane (rad)
+double yz_error(const Sample& s);          ///< |(y - y_d, z - z_d)| (m)
+double rotation_x_error(const Sample& s);  ///< |delta_phi_x| (rad)
+double push(const Sample& s);              ///< F_x (N): the tool touches the plane while it is above 0
 
 }  // namespace p3
 

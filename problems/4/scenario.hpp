@@ -38,7 +38,7 @@ inline constexpr double kReachTolerance = 5e-3;
 /// Simulated seconds of a run.
 inline constexpr double kDuration = 3.0;
 
-// The bounds of the graded tests (tests/graded/p4.cpp), which hw2-p4 also prints beside its
+// The bounds of the graded tests (problems/4/graded.cpp), which hw2-p4 also prints beside its
 // results, for question v's controller over a kDuration run.
 
 /// Time until the tip stays within kReachTolerance of x_d (s). The task dynamics
@@ -127,6 +127,8 @@ using Law = std::function<Eigen::Vector3d(const hw2::p4::State&, const TaskSpace
 /// checked.
 class Scenario {
  public:
+  /// Simulated seconds of each graded run and of a --test replay (question v's run).
+  static constexpr double kGradedDuration = kDuration;
   using Observer = p4::Observer;
   using Sample = p4::Sample;
   using Summary = p4::Summary;
@@ -162,6 +164,13 @@ Result run_plain(Target target, const RunOptions& options);
 
 /// "along Z0 (elbow lock)" or "along Y0 (overhead lock)", for reports.
 std::string describe(Target target);
+
+// What the graded simulated tests (problems/4/graded.cpp) share with the program's replay of
+// one of them (--test NAME --seed N): the series their checks read, sample by sample. The grader
+// plots them (the report's figures); a replay prints their final values, which match the
+// figure's to round-off because both come from these functions applied to the same run.
+/// |x - x_d| (m) toward `target`'s x_d.
+double tip_error(hw2::p4::Target target, const Sample& s);
 
 }  // namespace p4
 

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <problems/1b/scenario.hpp>
+
 #include "cli.hpp"
 #include "p1_command.hpp"
 #include "p4_command.hpp"
@@ -171,7 +173,7 @@ TEST_CASE("--live takes --port, a port number, and --port alone is refused by na
 TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, never with --duration") {
   // The report's replay command (grader/trusted/report.cpp: replay_command) is
   // `hw2-p1 3 --test "NAME" --seed N`: it must parse, and start_replay then sets the graded
-  // run's duration (scenarios/graded.hpp: 10 s for 1b, one period of q_d). Seen to fail on the
+  // run's duration (p1b::Scenario::kGradedDuration: 10 s, one period of q_d). Seen to fail on the
   // parser before --test: "unknown argument '--test'", exit 2.
   cli::P1Command command;
   const std::string name = "iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d";
@@ -181,7 +183,7 @@ TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, neve
   command.options.run.duration = 3.0;
   std::ostringstream said;
   std::streambuf* saved = std::cout.rdbuf(said.rdbuf());
-  cli::start_replay(command.options, "1b");
+  cli::start_replay(command.options, "1b", opspace::scenarios::p1b::Scenario::kGradedDuration);
   std::cout.rdbuf(saved);
   CHECK(command.options.run.duration == 10.0);
   CHECK(said.str().find(name) != std::string::npos);
