@@ -5,7 +5,7 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include <problems/1b/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
-#include "../../lib/src/scenarios/observe.hpp"
+#include "opspace/scenarios/observe.hpp"
 
 namespace opspace::scenarios::p1b {
 

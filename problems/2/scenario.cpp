@@ -8,7 +8,7 @@
 #include "opspace/algorithms/euler_params.hpp"
 #include <problems/2/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
-#include "../../lib/src/scenarios/observe.hpp"
+#include "opspace/scenarios/observe.hpp"
 
 namespace opspace::scenarios::p2 {
 

@@ -7,7 +7,7 @@
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/algorithms/singularity.hpp"
 #include "opspace/model/urdf.hpp"
-#include "../../lib/src/scenarios/observe.hpp"
+#include "opspace/scenarios/observe.hpp"
 
 namespace opspace::scenarios::p4 {
 

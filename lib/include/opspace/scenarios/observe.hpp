@@ -1,5 +1,6 @@
-// What the problems' Observers (problems/<key>/scenario.cpp) share: the joint-space part of a
-// State, the tip of a point task, and the check of the robot's number of joints.
+/// @file scenarios/observe.hpp
+/// What the problems' Observers (problems/<key>/scenario.cpp) share: the joint-space part of a
+/// State, the tip of a point task, and the check of the robot's number of joints.
 #pragma once
 
 #include <stdexcept>
