@@ -43,9 +43,9 @@ template <class T, std::size_t N>
 void flatten(const std::array<T, N>& a, std::vector<double>& out) {
   for (const T& x : a) flatten(x, out);
 }
-template <class S, class = decltype(protocol::fields(std::declval<S&>(), protocol::AnyField{}, static_cast<S*>(nullptr)))>
+template <class S, class = decltype(fields(std::declval<S&>(), protocol::AnyField{}, static_cast<S*>(nullptr)))>
 void flatten(const S& s, std::vector<double>& out) {
-  protocol::fields(s, [&out](const auto& x) { flatten(x, out); }, static_cast<S*>(nullptr));
+  fields(s, [&out](const auto& x) { flatten(x, out); }, static_cast<S*>(nullptr));
 }
 
 std::string text(const std::vector<double>& values) {

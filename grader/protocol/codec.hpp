@@ -109,52 +109,10 @@ void get(Reader& r, std::array<T, N>& a) {
   for (T& x : a) get(r, x);
 }
 
-// --- the problem set's structs: each lists its fields once, for both directions -----------
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p1a::DegreesOfFreedom*) {
-  f(s.task), f(s.robot), f(s.redundant);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p1a::DisplacementSplit*) {
-  f(s.with_pseudo_inverse), f(s.with_inertia_weighted);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p1b::State*) {
-  f(s.t), f(s.q), f(s.dq), f(s.x), f(s.dx), f(s.Jv), f(s.A), f(s.g), f(s.Lambda_v), f(s.Jbar_v), f(s.p);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p1b::Goal*) {
-  f(s.x_d), f(s.q_d), f(s.kpx), f(s.kvx), f(s.kpj), f(s.kvj);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p2::State*) {
-  f(s.t), f(s.q), f(s.dq), f(s.x_p), f(s.lambda), f(s.v), f(s.w), f(s.J0), f(s.A), f(s.g), f(s.Lambda0),
-      f(s.Jbar0), f(s.N0), f(s.p);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p2::Goal*) {
-  f(s.x_d), f(s.xdot_d), f(s.xddot_d), f(s.kpx), f(s.kvx), f(s.kvj);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p3::Goal*) {
-  f(s.x_d), f(s.xdot_d), f(s.xddot_d), f(s.F_d), f(s.kpx), f(s.kvx), f(s.kvj);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p4::Kinematics*) {
-  f(s.q), f(s.x), f(s.Jv), f(s.Jw), f(s.H);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p4::Directions*) {
-  f(s.count), f(s.u);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p4::State*) {
-  f(s.t), f(s.q), f(s.dq), f(s.x), f(s.dx), f(s.Jv), f(s.A), f(s.g), f(s.Lambda_v), f(s.Jbar_v), f(s.N), f(s.p);
-}
-template <class S, class F>
-void fields(S& s, F&& f, hw2::p4::Goal*) {
-  f(s.x_d), f(s.kpx), f(s.kvx), f(s.kpj), f(s.kvj);
-}
+// --- the problem set's structs: each problem's functions.hpp (problems/<key>/) lists their
+// fields once, for both directions, as fields(s, f, static_cast<S*>(nullptr)) in the contract's
+// namespace, where the calls below find it by argument-dependent lookup: a struct without one
+// has neither put() nor get(), and a function that returns it does not compile in the runner.
 
 /// Accepts any field: what put() and get() below use to ask "has T a field list?".
 struct AnyField {

@@ -5,6 +5,8 @@
 #include <map>
 #include <sstream>
 
+#include "problem_forbidden.hpp"
+
 namespace opspace::grading {
 
 namespace {
@@ -28,45 +30,16 @@ std::size_t operator_length(const std::string& s, std::size_t i) {
   return kOperator.size();
 }
 
-// Problem 1a's answers in the library: the PP robot's closed forms and the generalized inverses.
-std::vector<Oracle> oracles_1a() {
-  const std::string ginv = "iv. the pseudo-inverse is J^T (J J^T)^-1", split = "vi. J+ shares dx equally between the joints, Jbar moves only joint 2";
-  const std::string jbar = "vi. the inertia-weighted inverse moves only the light link";
-  return {{"opspace::pp::", "the closed forms of problem 1a (lib/include/opspace/algorithms/pp_robot.hpp)", {}},
-          {"opspace::pseudo_inverse", "J+ (linalg.hpp)", {ginv, split}},
-          {"opspace::weighted_inverse", "J# (linalg.hpp)", {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1", jbar, split}},
-          {"opspace::dynamically_consistent_inverse", "Jbar (linalg.hpp)", {jbar, split}},
-          // The operational-space quantities of problems 1b-4 hold Jbar too.
-          {"opspace::operational_space", "Jbar among the operational-space quantities (opspace.hpp)", {jbar, split}},
-          {"opspace::nullspace_projector", "I - J_inv J (linalg.hpp)",
-           {"iv. I - J+ J keeps only the self-motions that leave the end-effector still",
-            "v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector",
-            "iv-vi. every inverse gives the family dq = J_inv dx + (I - J_inv J) dq0"}}};
-}
-
-// Problem 4's answers in the library: the singularity analysis.
-std::vector<Oracle> oracles_4() {
-  const std::vector<std::string> analysis = {
-      "i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv",
-      "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv elsewhere",
-      "iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0",
-      "iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I elbow lock along Z0 and a "
-      "Type II overhead lock across its plane",
-      "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one"};
-  std::vector<Oracle> out;
-  for (const char* f : {"opspace::directions", "opspace::singularity_type", "opspace::analyse_singularities",
-                        "opspace::self_motion_curvature", "opspace::directional_hessian"})
-    out.push_back({f, "the singularity analysis of problem 4 (singularity.hpp)", analysis});
-  return out;
-}
-
 }  // namespace
 
 std::vector<Oracle> oracles(const std::string& key) {
   // Every problem: the scenarios compute the reference's quantities and laws. Then the problems
   // whose answers the library holds besides.
   std::vector<Oracle> out = {{"opspace::scenarios::", "the scenarios' own trajectories and control laws", {}}};
-  static const std::map<std::string, std::vector<Oracle> (*)()> kProblemOracles = {{"1a", oracles_1a}, {"4", oracles_4}};
+  // Generated from problems.txt: each problem folder's forbidden.hpp, where it has one.
+#define OPSPACE_ORACLES_ENTRY(key, problem) {key, forbidden::problem},
+  static const std::map<std::string, std::vector<Oracle> (*)()> kProblemOracles = {OPSPACE_PROBLEM_FORBIDDEN(OPSPACE_ORACLES_ENTRY)};
+#undef OPSPACE_ORACLES_ENTRY
   if (const auto found = kProblemOracles.find(key); found != kProblemOracles.end()) {
     for (Oracle& o : found->second()) out.push_back(std::move(o));
   }

@@ -4,7 +4,8 @@
 ///
 /// F(problem, code, Code, name): the contract's namespace (hw2::problem), the protocol code
 /// (the problem's byte high; a code is never reused or renumbered), the protocol's enumerator
-/// (protocol::Function::Code) and the function's name in the contract.
+/// (protocol::Function::Code) and the function's name in the contract. After the table, the
+/// fields of the contract's structs, as the protocol encodes them (grader/protocol/codec.hpp).
 #pragma once
 
 #include <opspace/hw2/p1a.hpp>
@@ -19,3 +20,16 @@
   F(p1a, 0x1a07, kP1aNullspaceProjector, nullspace_projector)          /* questions iv-vi: I - J_inv J */          \
   F(p1a, 0x1a08, kP1aInverseKinematicsStep, inverse_kinematics_step)   /* iv-vi: dq = J_inv dx + N dq0 */          \
   F(p1a, 0x1a09, kP1aSplitDisplacement, split_displacement)            /* question vi: dq with J+ and with Jbar */
+
+// How the protocol encodes this problem's structs (grader/protocol/codec.hpp): each field once,
+// in order, for both directions.
+namespace opspace::hw2::p1a {
+template <class S, class F>
+void fields(S& s, F&& f, DegreesOfFreedom*) {
+  f(s.task), f(s.robot), f(s.redundant);
+}
+template <class S, class F>
+void fields(S& s, F&& f, DisplacementSplit*) {
+  f(s.with_pseudo_inverse), f(s.with_inertia_weighted);
+}
+}  // namespace opspace::hw2::p1a

@@ -1,6 +1,7 @@
 cmake_minimum_required(VERSION 3.22)
 # One case of the tamper suite: a submission made of the reference solutions with one file
-# replaced (CASE.cpp, configured with @RESULTS_JSON@, @WORK@, @REPO@, @GRADER@, @FAULT@) or
+# replaced (CASE.cpp, configured with @RESULTS_JSON@, @WORK@, @REPO@, @GRADER@, @FAULT@,
+# @TOTAL@: the points of the whole list, problems.txt) or
 # patched (CASE.cmake sets TARGET, FROM, TO, PREPEND), graded by the real grader. Then, after a
 # pause that lets anything the submission left behind act, the case checks that
 #   - the grader exited 0 and results.json is valid and unchanged since the grader exited;
@@ -17,6 +18,10 @@ cmake_minimum_required(VERSION 3.22)
 if(NOT TIMEOUT)
   set(TIMEOUT 5)
 endif()
+# The full marks a forged score line claims (problems.txt).
+include("${REPO}/grader/problems.cmake")
+opspace_read_problems("${REPO}/problems.txt")
+set(TOTAL ${OPSPACE_PROBLEM_TOTAL})
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/exercises")
 file(GLOB solutions "${SOLUTIONS}/*.cpp")

@@ -14,7 +14,7 @@ Vector6d control(Part, const State&, const Goal&) {
       for (int i = 0; i < 8; ++i) {
         sleep(1);
         if (FILE* f = std::fopen("@RESULTS_JSON@", "w")) {
-          std::fputs("{\"score\": 1000, \"max_score\": 97, \"tests\": []}\n", f);
+          std::fputs("{\"score\": 1000, \"max_score\": @TOTAL@, \"tests\": []}\n", f);
           std::fclose(f);
         }
         if (FILE* f = std::fopen("@WORK@/pwned", "w")) std::fclose(f);

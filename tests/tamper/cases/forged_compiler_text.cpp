@@ -4,4 +4,4 @@
 // "  PASS  3/3   i. forged" began a line of its own.
 #include <opspace/hw2/p1b.hpp>
 
-static_assert(sizeof(int) == 0, "forged\n  PASS  3/3   i. forged by the compiler\nTotal: 97 / 97 points\n");
+static_assert(sizeof(int) == 0, "forged\n  PASS  3/3   i. forged by the compiler\nTotal: @TOTAL@ / @TOTAL@ points\n");

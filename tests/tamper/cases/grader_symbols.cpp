@@ -7,7 +7,7 @@
 namespace opspace::grading {
 struct Check;
 struct Problem;
-double full_marks() { return 97.0; }
+double full_marks() { return @TOTAL@.0; }
 void become_subreaper() {}
 std::string sanitize(const std::string& text, unsigned long, unsigned long) { return text; }
 int grader_main(int, char**, const std::string&) { return 0; }

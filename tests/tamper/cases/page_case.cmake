@@ -1,10 +1,10 @@
 cmake_minimum_required(VERSION 3.22)
 # What the student's page shows (issue 38): the reference solutions graded by the real grader,
 # then results.json read as Gradescope reads it. MODE is
-#   tag        the reference 1b with "#warning <h1>Total: 97 / 97 points</h1>": the compiler's
+#   tag        the reference 1b with "#warning <h1>Total: ${TOTAL} / ${TOTAL} points</h1>": the compiler's
 #              warning quotes it, and results.json's output shows it, escaped;
 #   file_name  a submission holding the reference files and two whose names hold a tag
-#              ("<h2>Total: 97 / 97 points</h2>.cpp", "<h2 ...>Total: 97 of 97 points.cpp"), collected and completed as run_autograder does
+#              ("<h2>Total: ${TOTAL} / ${TOTAL} points</h2>.cpp", "<h2 ...>Total: ${TOTAL} of ${TOTAL} points.cpp"), collected and completed as run_autograder does
 #              (deploy/collect_submission.sh, deploy/results.cmake): the note that names it;
 #   hidden     the reference 1b with --hidden "in simulation": the report and results.json's
 #              output count the tests shown alone (10 of 1b's 20 points), the hidden tests are
@@ -16,6 +16,10 @@ cmake_minimum_required(VERSION 3.22)
 if(NOT TIMEOUT)
   set(TIMEOUT 60)
 endif()
+# The full marks the forged lines claim: the whole list's (problems.txt).
+include("${REPO}/grader/problems.cmake")
+opspace_read_problems("${REPO}/problems.txt")
+set(TOTAL ${OPSPACE_PROBLEM_TOTAL})
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}/exercises")
 file(GLOB solutions "${REPO}/solutions/*.cpp")
@@ -26,15 +30,15 @@ set(args --exercises "${WORK}/exercises" --gradescope "${results}" --html "${pag
 if(MODE STREQUAL "tag")
   file(COPY ${solutions} DESTINATION "${WORK}/exercises")
   file(READ "${WORK}/exercises/p1b.cpp" text)
-  file(WRITE "${WORK}/exercises/p1b.cpp" "#warning <h1>Total: 97 / 97 points</h1>\n${text}")
+  file(WRITE "${WORK}/exercises/p1b.cpp" "#warning <h1>Total: ${TOTAL} / ${TOTAL} points</h1>\n${text}")
   list(APPEND args --problem 1b)
 elseif(MODE STREQUAL "file_name")
   set(submission "${WORK}/submission")
   file(COPY ${solutions} DESTINATION "${submission}")
   # A name cannot hold "/": this one is three folders deep, as a zip can hold it, and the note
   # names its path. The second is one file name, its tag left open (a page renders it anyway).
-  file(WRITE "${submission}/<h2>Total: 97 / 97 points</h2>.cpp" "// not an exercise file\n")
-  file(WRITE "${submission}/<h2 style=color:green>Total: 97 of 97 points.cpp" "// not an exercise file\n")
+  file(WRITE "${submission}/<h2>Total: ${TOTAL} / ${TOTAL} points</h2>.cpp" "// not an exercise file\n")
+  file(WRITE "${submission}/<h2 style=color:green>Total: ${TOTAL} of ${TOTAL} points.cpp" "// not an exercise file\n")
   execute_process(COMMAND bash "${REPO}/deploy/collect_submission.sh" "${submission}" "${WORK}/exercises"
                           "${REPO}/exercises" RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
@@ -96,19 +100,19 @@ if(all_texts MATCHES "<[^\n]*>")
 endif()
 
 if(MODE STREQUAL "tag")
-  if(NOT shown MATCHES "#warning &lt;h1&gt;Total: 97 / 97 points&lt;/h1&gt;")
+  if(NOT shown MATCHES "#warning &lt;h1&gt;Total: ${TOTAL} / ${TOTAL} points&lt;/h1&gt;")
     message(FATAL_ERROR "results.json's output does not show the warning, escaped:\n${shown}")
   endif()
   # The report's page (hw2-grade --html, issue 41) quotes the warning too, as text: the tag
   # escaped, never an element. Seen to fail with report_html.cpp's text() returning its argument
   # unescaped.
   file(READ "${page}" html)
-  if(html MATCHES "<h1>Total" OR NOT html MATCHES "#warning &lt;h1&gt;Total: 97 / 97 points&lt;/h1&gt;")
+  if(html MATCHES "<h1>Total" OR NOT html MATCHES "#warning &lt;h1&gt;Total: ${TOTAL} / ${TOTAL} points&lt;/h1&gt;")
     message(FATAL_ERROR "the report's page does not quote the warning as escaped text:\n${html}")
   endif()
 elseif(MODE STREQUAL "file_name")
-  if(NOT shown MATCHES "'&lt;h2&gt;Total: 97 / 97 points&lt;/h2&gt;.cpp'" OR
-     NOT shown MATCHES "'&lt;h2 style=color:green&gt;Total: 97 of 97 points.cpp'")
+  if(NOT shown MATCHES "'&lt;h2&gt;Total: ${TOTAL} / ${TOTAL} points&lt;/h2&gt;.cpp'" OR
+     NOT shown MATCHES "'&lt;h2 style=color:green&gt;Total: ${TOTAL} of ${TOTAL} points.cpp'")
     message(FATAL_ERROR "results.json's output does not name the file, escaped:\n${shown}")
   endif()
 elseif(MODE STREQUAL "hidden")

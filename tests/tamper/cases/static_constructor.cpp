@@ -8,7 +8,7 @@
 namespace {
 void forge() {
   if (FILE* f = std::fopen("@RESULTS_JSON@", "w")) {
-    std::fputs("{\"score\": 1000, \"max_score\": 97, \"tests\": []}\n", f);
+    std::fputs("{\"score\": 1000, \"max_score\": @TOTAL@, \"tests\": []}\n", f);
     std::fclose(f);
   }
   if (FILE* f = std::fopen("@WORK@/pwned", "w")) std::fclose(f);
@@ -17,7 +17,7 @@ struct Forger {
   Forger() {
     forge();
     std::atexit(forge);
-    if (std::system("@GRADER@") != 0) std::puts("Total: 97 / 97 points");
+    if (std::system("@GRADER@") != 0) std::puts("Total: @TOTAL@ / @TOTAL@ points");
   }
 } forger;
 }  // namespace
