@@ -15,9 +15,10 @@
 #include <string>
 #include <vector>
 
+#include <problems/1b/command.hpp>
+#include <problems/4/command.hpp>
+
 #include "cli.hpp"
-#include "p1_command.hpp"
-#include "p4_command.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "p4_command.hpp"
+#include "command.hpp"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "p1_command.hpp"
+#include "command.hpp"
 
 #include <iostream>
 #include <string>

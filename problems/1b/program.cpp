@@ -14,7 +14,7 @@
 #include <opspace/visuals/visuals.hpp>
 
 #include "cli.hpp"
-#include "p1_command.hpp"
+#include "command.hpp"
 #include "program.hpp"
 #include "reference_runs.hpp"
 

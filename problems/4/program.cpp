@@ -18,7 +18,7 @@
 #include <opspace/model/urdf.hpp>
 
 #include "cli.hpp"
-#include "p4_command.hpp"
+#include "command.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
