@@ -1,6 +1,6 @@
 // hw2-grade: grades the exercise files of OPSPACE_DEFAULT_EXERCISES (exercises/ in hw2-grade,
 // solutions/ in hw2-grade-sol), or of --exercises DIR. The grader itself lives in
-// tests/graded/: it builds each problem's runner from its file and never runs the
+// grader/ (trusted/ and suite/): it builds each problem's runner from its file and never runs the
 // student's code in this process.
 #include "grader.hpp"
 

@@ -1,5 +1,5 @@
 // The end of a run that judges itself: every number beside what it should be, i.e. the bound
-// the graded suite applies (the constants of the scenario headers, shared with tests/graded/)
+// the graded suite applies (the constants of the scenario headers, shared with problems/<key>/graded.cpp)
 // and the reference run's value (solutions/, run at build time: reference_runs.hpp).
 #pragma once
 

@@ -98,9 +98,9 @@ cp "$REPO"/solutions/p*.cpp "$reference/"
 say "removing the reference, the mutants, the tamper cases and the graded tests' sources"
 rm -rf "$REPO/solutions" "$REPO/tests/mutants" "$REPO/tests/tamper" "$REPO/tests/deploy" \
        "$BUILD/solutions" "$BUILD/tests/mutants" "$BUILD/tests/tamper" "$BUILD/grading-cache" \
-       "$BUILD/tests/graded/seed" "$BUILD/tests/graded/CMakeFiles/opspace_graded.dir" "$BUILD/Testing"
+       "$BUILD/grader/suite/CMakeFiles/opspace_graded.dir" "$BUILD/Testing"
 rm -rf "$BUILD"/problems/*/CMakeFiles/opspace_graded_*.dir
-rm -f "$REPO"/tests/graded/*.cpp "$REPO"/problems/*/graded.cpp "$REPO"/problems/*/mistakes.cpp "$REPO"/problems/*/answers.hpp "$BUILD"/tests/graded/*.json
+rm -f "$REPO"/grader/suite/*.cpp "$REPO"/problems/*/graded.cpp "$REPO"/problems/*/mistakes.cpp "$REPO"/problems/*/answers.hpp
 find "$BUILD" -name '*-sol' -type f -delete
 find "$BUILD" \( -name '*-sol.dir' -o -name 'opspace_solutions.dir' \) -type d -prune -exec rm -rf {} +
 # What remains (the library, the grader, its runner loops, the stubs) is root's alone: the
@@ -115,11 +115,12 @@ while IFS='=' read -r key value; do
 done < "$BUILD/grader/runner-toolchain.txt"
 
 # --- 6. prove the lockdown and grade the stubs --------------------------------------------------
-for gone in solutions tests/mutants tests/tamper problems/1b/graded.cpp problems/4/mistakes.cpp problems/4/answers.hpp build/release/apps/hw2-grade-sol; do
+for gone in solutions tests/mutants tests/tamper problems/1b/graded.cpp problems/4/mistakes.cpp problems/4/answers.hpp \
+           grader/suite/reference.cpp build/release/apps/hw2-grade-sol; do
   [ ! -e "$REPO/$gone" ] || fail "$REPO/$gone is still there"
 done
 if [ "$(id -u)" -eq 0 ]; then
-  for secret in "$BUILD/apps/hw2-grade" "$REPO/tests/graded/CMakeLists.txt" \
+  for secret in "$BUILD/apps/hw2-grade" "$REPO/grader/suite/CMakeLists.txt" \
                 "$REPO/lib/src/algorithms/pp_robot.cpp" \
                 "$REPO/lib/include/opspace/algorithms/linalg.hpp" "$ROOT/run_autograder"; do
     [ -e "$secret" ] || continue

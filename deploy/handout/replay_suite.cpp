@@ -1,6 +1,6 @@
 // The handout's graded suite: the real suite's tests (names, points, hints), each replaying the
 // calls it made to the reference solutions, recorded by the instructor's hw2-record
-// (tests/graded/visible/suite.txt): your function gets the same arguments and must give the
+// (grader/suite/visible/suite.txt): your function gets the same arguments and must give the
 // same answer. Numbers, not code: this suite holds no reference implementation. The course's
 // autograder grades with fresh random inputs and runs the simulations with your controller.
 #include <Eigen/Core>

@@ -10,7 +10,7 @@
 ///     walk;
 ///   - each runner's dispatch (untrusted/serve.hpp: OPSPACE_RUNNER_DISPATCH);
 ///   - the functions linked into our own test programs (tests/graded/linked_api.hpp) and the
-///     grader's own answers (tests/graded/reference.cpp).
+///     grader's own answers (grader/suite/reference.cpp).
 /// A row missing from a table fails to compile where its function is used by name (a graded
 /// test, a mistake, the reference); a function missing from a contract, or from the reference,
 /// fails to compile in the code derived from its row. A problem's codes must carry its byte:

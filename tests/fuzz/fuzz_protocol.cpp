@@ -1,4 +1,4 @@
-// libFuzzer target: the grader's reading of what a runner sends (tests/graded/
+// libFuzzer target: the grader's reading of what a runner sends (grader/trusted/
 // answers.cpp, student_text.cpp's student_line()): arbitrary bytes as the answer to a request.
 // Input: one byte choosing the function asked (of protocol::kFunctions, every function in
 // the problems' tables' order), then a 16-byte answer header, then the payload.
