@@ -5,7 +5,8 @@
 //       print beside their own) and FRAGMENTS (the docs' tables of the reference runs);
 //   hw2-reference docs check|write DOCS_DIR FRAGMENTS
 //       compares (ctest) or replaces the text between "<!-- generated: NAME ..." and
-//       "<!-- end generated: NAME -->" in DOCS_DIR/*.md with fragment NAME of FRAGMENTS.
+//       "<!-- end generated: NAME -->" in DOCS_DIR/*.md and in the problems' guides beside it,
+//       DOCS_DIR/../problems/*/guide.md, with fragment NAME of FRAGMENTS.
 // The build runs `generate` (apps/CMakeLists.txt); `cmake --build build/release --target
 // refresh-docs` runs `docs write`.
 // The files: this one (the runs and the command line), reference_header.cpp,

@@ -1,5 +1,5 @@
-// hw2-reference docs check|write (reference.cpp): the generated fragments of docs/*.md
-// against this build's reference runs. `check` (ctest) accepts the same text and numbers, where
+// hw2-reference docs check|write (reference.cpp): the generated fragments of docs/*.md and of
+// the problems' guides (problems/*/guide.md) against this build's reference runs. `check` (ctest) accepts the same text and numbers, where
 // a paragraph wraps aside, and a "~" value within a factor of 2; `write` (the refresh-docs
 // target) replaces each fragment with this build's.
 #include <algorithm>
@@ -106,18 +106,29 @@ bool docs_match(const std::vector<std::string>& docs_lines, const std::vector<st
   return docs_line_matches(joined(docs_lines), joined(fresh));
 }
 
+/// The pages that may quote the reference runs: DIR/*.md and each problem's guide,
+/// DIR/../problems/<key>/guide.md.
+std::vector<std::filesystem::path> pages(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().extension() == ".md") files.push_back(entry.path());
+  }
+  for (const auto& entry : fs::directory_iterator((fs::path(dir) / ".." / "problems").lexically_normal())) {
+    const fs::path guide = entry.path() / "guide.md";
+    if (entry.is_directory() && fs::exists(guide)) files.push_back(guide);
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 }  // namespace
 
 int docs(bool write, const std::string& dir, const std::string& fragments_path) {
   const auto fragments = read_fragments(fragments_path);
   std::map<std::string, int> used;
   int stale = 0;
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() == ".md") files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  for (const std::filesystem::path& path : files) {
+  for (const std::filesystem::path& path : pages(dir)) {
     const std::vector<std::string> lines = lines_of(path.string());
     std::vector<std::string> out;
     bool changed = false;
@@ -163,7 +174,7 @@ int docs(bool write, const std::string& dir, const std::string& fragments_path) 
   }
   for (const auto& [name, text] : fragments) {
     if (used[name] == 0) {
-      std::cerr << "the fragment '" << name << "' appears in no page of " << dir << "\n";
+      std::cerr << "the fragment '" << name << "' appears in no page (" << dir << "/*.md, the guides problems/*/guide.md)\n";
       ++stale;
     }
   }

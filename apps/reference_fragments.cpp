@@ -1,7 +1,7 @@
 // hw2-reference's fragments of the docs (reference.cpp): the tables of each problem's reference
-// run that docs/problem*.md quote between "<!-- generated: NAME" markers, worded as the docs,
-// with "~" on the values that round-off moves by percents (reference_docs.cpp compares those
-// within a factor of 2).
+// run that its guide, problems/<key>/guide.md, quotes between "<!-- generated: NAME" markers,
+// worded as the guide, with "~" on the values that round-off moves by percents
+// (reference_docs.cpp compares those within a factor of 2).
 #include <algorithm>
 #include <cctype>
 #include <fstream>

@@ -37,7 +37,7 @@ Matrix6d force_selection() {
 //         + N0^T (A (-kvj dq) + g)
 //   delta_phi = E_r^+ (lambda - lambda_d),  [vdot_d; wdot_d] = E^+ xddot_d
 // E^+ evaluated at the CURRENT lambda (s.lambda), not at lambda_d.
-// (docs/problem3.md: does the law need anything more in the force directions?)
+// (problems/3/guide.md: does the law need anything more in the force directions?)
 Vector7d control(const State& s, const Goal& goal) {
   Vector7d tau = Vector7d::Zero();
   // FILL ME IN

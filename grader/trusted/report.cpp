@@ -133,8 +133,8 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
   // Nothing earned in a whole grading: the first problem of the list is where to begin.
   if (total == 0.0 && hidden_tests == 0 && problems.size() > 1) {
     const Problem& first = *problems.front().problem;
-    out << "Where to start: open exercises/p" << first.key << ".cpp (" << first.title << "; guide docs/problem" << first.key
-        << ".md)\nand grade it alone: bash scripts/grade --problem " << first.key << "\n";
+    out << "Where to start: open exercises/p" << first.key << ".cpp (" << first.title << "; guide problems/" << first.key
+        << "/guide.md)\nand grade it alone: bash scripts/grade --problem " << first.key << "\n";
   }
 }
 

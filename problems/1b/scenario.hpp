@@ -28,7 +28,7 @@ inline constexpr const char* kRobotFile = catalogue::kPuma.file;
 inline constexpr const char* kTipLink = catalogue::kPuma.tip_link;
 inline constexpr double kSettleTime = 2.0;  ///< errors are measured after this (s)
 /// Speed bound of the run (rad/s): high enough that PART2's wild wrist motion (a few hundred
-/// rad/s) is shown rather than stopped (docs/problem1b.md).
+/// rad/s) is shown rather than stopped (guide.md).
 inline constexpr double kMaxJointSpeed = 1000.0;
 /// Simulated seconds of the graded runs and of hw2-p1's default run: one period of q_d(t).
 inline constexpr double kDefaultDuration = 10.0;

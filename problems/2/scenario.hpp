@@ -55,7 +55,7 @@ inline constexpr double kLambdaStepMax = 0.01;
 /// How far a joint may go past its URDF position limit (rad). The law has no joint-limit task
 /// and the simulation does not enforce limits; a correct law drives the reference's joint path,
 /// whose joint 1 passes its 170 deg limit by about 2 deg at the far end of the y sweep
-/// (docs/problem2.md). 5 deg allows that and flags an arm that swings away from that path.
+/// (guide.md). 5 deg allows that and flags an arm that swings away from that path.
 inline constexpr double kJointLimitExcessMax = 5.0 * kDeg;
 /// Joint drift over the last period, Summary::joint_drift_per_period (rad). N0^T A (-kvj dq)
 /// damps the self-motion at rate kvj = 20 /s, so the joints repeat their motion every period

@@ -1,7 +1,7 @@
 // Graded tests of problem 4. Two kinds:
 // - the analysis (questions i-iv): at theta = (0, 90 deg, 0) and at random members of the arm's
 //   singular families, against closed forms of the geometry (derived below and in
-//   docs/problem4.md), from the library's Jv, Jw and Hessians of the tip;
+//   guide.md), from the library's Jv, Jw and Hessians of the tip;
 // - question v: the law at random states against the equation written out here, and the
 //   closed loop on the Bullet simulation, beside the plain operational-space controller,
 //   measured only on the problem set's law: every tick of the run is compared with the law's

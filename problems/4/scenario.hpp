@@ -29,7 +29,7 @@ inline constexpr const char* kTipLink = catalogue::kRRR.tip_link;
 /// Relative eigenvalue cut-off of the State's robust Lambda_v. A direction whose eigenvalue of
 /// Jv A^-1 Jv^T is below 1% of the largest is dropped: the PD force along it would cost
 /// torques of order m kpx |x - x_d| / sigma, beyond the 50 N m limits of the arm for a
-/// singular value sigma below about a tenth of the largest (docs/problem4.md).
+/// singular value sigma below about a tenth of the largest (guide.md).
 inline constexpr double kRobustTolerance = 1e-2;
 /// Distance of the target from the start along the singular direction (m).
 inline constexpr double kTargetDistance = 0.1;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A failed test of one problem as the student sees it on the report page (issue 41, the pictures
-# of docs/problem<KEY>.md): solutions/ with p<KEY>.cpp replaced by MUTANT (a known-wrong file of
+# of problems/<KEY>/guide.md): solutions/ with p<KEY>.cpp replaced by MUTANT (a known-wrong file of
 # tests/mutants/) graded by the real grader with --html, then, in the section of TEST:
 #   - it FAILED (the mutant is the catalogue's mistake that costs it);
 #   - figure QUANTITY (a simulated test), read from the figure's data attributes after its

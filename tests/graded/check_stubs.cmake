@@ -62,7 +62,7 @@ if(NOT out MATCHES "\nTotal: 0 / [0-9.]+ points")
 endif()
 # A grading that earned nothing names the first problem of problems.txt as where to start.
 list(GET OPSPACE_PROBLEM_KEYS 0 first)
-if(NOT out MATCHES "Where to start: open exercises/p${first}\\.cpp \\([^\n]+; guide docs/problem${first}\\.md\\)\nand grade it alone: bash scripts/grade --problem ${first}\n")
+if(NOT out MATCHES "Where to start: open exercises/p${first}\\.cpp \\([^\n]+; guide problems/${first}/guide\\.md\\)\nand grade it alone: bash scripts/grade --problem ${first}\n")
   message(FATAL_ERROR "the stubs' report does not say to start with problem ${first}, the first of problems.txt:\n${out}")
 endif()
 if(WORK)

@@ -2,7 +2,7 @@
 // forgotten", problems/1a/mistakes.cpp) as a student would write it: solutions/p1a.cpp with
 // the m2 d1dot d2dot term of the kinetic energy left out of the mass matrix. Graded as a
 // submission by check_mutant_page.sh: the report page's table of M shows the two off-diagonal
-// entries wrong (docs/problem1a.md's picture).
+// entries wrong (problems/1a/guide.md's picture).
 #include <opspace/hw2/p1a.hpp>
 
 namespace opspace::hw2::p1a {

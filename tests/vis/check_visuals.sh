@@ -118,7 +118,7 @@ case "$mode" in
     ;;
   compare)
     need_gnuplot
-    # 3 s: PART2's tip drifts from the first second on (docs/problem1b.md).
+    # 3 s: PART2's tip drifts from the first second on (problems/1b/guide.md).
     run "$program compare" compare --duration 3 --csv run/cmp.csv
     cd "$work"
     check_images out.txt run/cmp-drift.png run/cmp-drift.svg

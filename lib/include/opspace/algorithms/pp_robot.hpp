@@ -1,7 +1,7 @@
 /// @file algorithms/pp_robot.hpp
 /// Closed forms of problem 1a for the PP robot: two prismatic joints d1, d2 along X0, link 2
 /// riding on link 1, task x_ee = d1 + d2. These are the oracles of the graded tests; each is
-/// derived by hand in docs/problem1a.md and cross-checked against linalg.hpp in tests/lib.
+/// derived by hand in problems/1a/guide.md and cross-checked against linalg.hpp in tests/lib.
 #pragma once
 
 #include <Eigen/Core>
