@@ -1,7 +1,8 @@
 // hw2-reference docs check|write (reference.cpp): the generated fragments of docs/*.md and of
-// the problems' guides (problems/*/guide.md) against this build's reference runs. `check` (ctest) accepts the same text and numbers, where
-// a paragraph wraps aside, and a "~" value within a factor of 2; `write` (the refresh-docs
-// target) replaces each fragment with this build's.
+// the problems' guides (problems/*/guide.md) against this build's reference runs. `check`
+// (ctest) accepts the same text and numbers, where a paragraph wraps aside, and a "~" value
+// within a factor of 2; `write` (the refresh-docs target) replaces each fragment with this
+// build's.
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -174,7 +175,8 @@ int docs(bool write, const std::string& dir, const std::string& fragments_path) 
   }
   for (const auto& [name, text] : fragments) {
     if (used[name] == 0) {
-      std::cerr << "the fragment '" << name << "' appears in no page (" << dir << "/*.md, the guides problems/*/guide.md)\n";
+      std::cerr << "the fragment '" << name << "' appears in no page (" << dir
+                << "/*.md, problems/*/guide.md)\n";
       ++stale;
     }
   }
