@@ -62,7 +62,7 @@ void print_summary(const p2::Result& r, double duration, const std::string& csv)
   if (ref.joint_limit_margin < 0) {
     table.note("expected: the law has no joint-limit task and the simulation enforces no limit, so the");
     table.note("reference too takes joint " + std::to_string(ref.joint_limit_joint + 1) +
-               " past its limit at the far end of the y sweep (docs/problem2.md)");
+               " past its limit at the far end of the y sweep (problems/2/guide.md)");
   }
   if (s.time_reached >= p2::kSettleTime + p2::kPeriod) {
     table.row("joint drift over the last period", cli::show(s.joint_drift_per_period, cli::kDegrees) +
