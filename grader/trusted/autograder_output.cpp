@@ -48,6 +48,7 @@ std::string xml_text(const std::string& text) {
 // (results.json shows text alone: docs/grader.md) and the command that replays it.
 std::string feedback(const TestResult& r, std::uint64_t seed = 0) {
   std::string text;
+  for (const std::string& j : r.judged) text += "judged: " + j + "\n";
   for (const std::string& f : r.findings) text += "- " + f + "\n";
   const bool failed = r.score < r.test->points;
   if (failed && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";

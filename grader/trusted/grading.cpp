@@ -106,6 +106,20 @@ bool Check::at_least(const std::string& what, double measured, double bound, con
   return false;
 }
 
+std::string Judgement::line() const {
+  const bool met = std::isfinite(yours) && (upper ? yours <= bound : yours >= bound);
+  const std::string theirs = std::isnan(reference) ? "not run" : value(reference, unit_scale, unit);
+  const std::string mine = std::isnan(yours) ? "none" : value(yours, unit_scale, unit);
+  return statistic + ": yours " + mine + ", the reference's " + theirs + ", bound " + (upper ? "at most " : "at least ") +
+         value(bound, unit_scale, unit) + (met ? ": met" : ": not met");
+}
+
+bool Check::judge(const Judgement& j, const std::string& meaning) {
+  judged_.push_back(j.line());
+  return j.upper ? at_most(j.statistic, j.yours, j.bound, meaning, j.unit_scale, j.unit)
+                 : at_least(j.statistic, j.yours, j.bound, meaning, j.unit_scale, j.unit);
+}
+
 void Check::credit_at_most(double fraction, const std::string& message) {
   fraction_ = std::min(fraction_, std::clamp(fraction, 0.0, 1.0));
   findings_.push_back(message);
@@ -124,6 +138,7 @@ TestResult run_test(const GradedTest& test, const Hw2Api& api) {
     result.score = check.fraction() * test.points;
     result.findings = check.findings();
     result.figures = check.figures();
+    result.judged = check.judged();
     result.table = check.table();
   } catch (const StudentException& e) {
     result.findings = {e.what()};

@@ -37,6 +37,21 @@ struct RunFigure {
   std::function<Series()> make_reference;  ///< runs the law for it, when it is not known yet
 };
 
+/// What a behaviour test judged of a run: one statistic of the student's run beside the same
+/// statistic of the reference's run (the problem set's law in the same scenario), and the bound.
+/// Shown on every simulated test, passed or failed, so that a verdict can be read off its numbers.
+struct Judgement {
+  std::string statistic;  ///< what is judged, e.g. "position error RMS after 1 s"
+  double yours = std::numeric_limits<double>::quiet_NaN();      ///< of the student's run (SI)
+  double reference = std::numeric_limits<double>::quiet_NaN();  ///< of the reference's run (SI)
+  double bound = std::numeric_limits<double>::quiet_NaN();      ///< the check's bound (SI)
+  bool upper = true;        ///< the bound is a maximum (at_most), else a minimum (at_least)
+  double unit_scale = 1.0;  ///< SI value times this: the value shown
+  std::string unit;         ///< its unit as shown
+  /// "position error RMS after 1 s: yours 0.21 mm, the reference's 0.21 mm, bound at most 1 mm: met"
+  std::string line() const;
+};
+
 /// A failed comparison of a matrix or a vector, entry by entry: for the report's table.
 struct EntryTable {
   std::string what;          ///< the check's name of the value
@@ -67,6 +82,11 @@ class Check {
   /// bound / 2, nothing below (the mirror image of at_most()).
   bool at_least(const std::string& what, double measured, double bound, const std::string& meaning,
                 double unit_scale = 1.0, const std::string& unit = "");
+  /// Judges a measured statistic against its bound (at_most() or at_least(), by j.upper) and
+  /// keeps its line (Judgement::line) for the report, whatever the verdict.
+  bool judge(const Judgement& j, const std::string& meaning);
+  /// Keeps a line about what was judged that is not a finding (it never changes the credit).
+  void judged_note(const std::string& line) { judged_.push_back(line); }
   /// Caps the test's credit at `fraction` (partial credit for a measured quantity).
   void credit_at_most(double fraction, const std::string& message);
   /// Keeps a run's figure for the report. Never changes the credit.
@@ -75,6 +95,7 @@ class Check {
   double fraction() const { return fraction_; }  ///< share of the points earned, 0 to 1
   const std::vector<std::string>& findings() const { return findings_; }  ///< what failed, in order
   const std::vector<RunFigure>& figures() const { return figures_; }  ///< the runs the test judged
+  const std::vector<std::string>& judged() const { return judged_; }  ///< what was judged, in order
   /// The first failed near() of a matrix or vector of matching shape, entry by entry (empty
   /// `what` if none).
   const EntryTable& table() const { return table_; }
@@ -84,6 +105,7 @@ class Check {
   double fraction_ = 1.0;
   std::vector<std::string> findings_;
   std::vector<RunFigure> figures_;
+  std::vector<std::string> judged_;
   EntryTable table_;
 };
 
@@ -110,6 +132,7 @@ struct TestResult {
   bool diagnosed = false;
   std::string printed;  ///< what the student's code printed during the test (sanitized, cut)
   std::vector<RunFigure> figures;  ///< the runs a simulated test judged (Check::figure)
+  std::vector<std::string> judged;  ///< what a simulated test judged, yours and the reference's (Check::judge)
   EntryTable table;                ///< the first wrong matrix or vector, entry by entry
   std::string mistake;             ///< the known mistake named for this test (catalogue), if any
 };

@@ -97,6 +97,11 @@ const Series& reference_series(const std::string& key, const std::function<Serie
   return made;
 }
 
+double reference_statistic(const std::string& key, const std::function<double()>& make) {
+  // One point (0, value): the store keeps series, and a statistic is a series of one.
+  return reference_series("statistic " + key, [&make] { return Series{{0.0}, {make()}}; }).v.front();
+}
+
 void attach_references(std::vector<RunFigure>& figures, bool needed) {
   for (RunFigure& figure : figures) {
     if (figure.reference_key.empty() || !figure.make_reference) continue;

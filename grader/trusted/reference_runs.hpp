@@ -29,6 +29,11 @@ bool reference_known(const std::string& key);
 /// The reference's series `key`, made by `make` the first time it is asked for.
 const Series& reference_series(const std::string& key, const std::function<Series()>& make);
 
+/// The reference's value of the statistic `key` (what a behaviour test judges of the reference's
+/// run, Judgement::reference), made by `make` the first time it is asked for and kept as the
+/// series are: a later grading by the same grader reads it without running the reference.
+double reference_statistic(const std::string& key, const std::function<double()>& make);
+
 /// Fills the reference series of `figures`: all of them when `needed` (a failed test), else
 /// those already known.
 void attach_references(std::vector<RunFigure>& figures, bool needed);

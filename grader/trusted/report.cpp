@@ -102,6 +102,7 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
       const std::string score = format_points(r.score) + "/" + format_points(r.test->points);
       out << "  " << status(r) << "  " << score << std::string(score.size() < 6 ? 6 - score.size() : 1, ' ')
           << r.test->name << "\n";
+      for (const std::string& j : r.judged) out << "          judged: " << j << "\n";
       if (r.score < r.test->points) {
         for (const std::string& finding : r.findings) out << "          - " << finding << "\n";
         if (!r.interrupted && !r.diagnosed) out << "          hint: " << r.test->hint << "\n";

@@ -257,6 +257,11 @@ void test_block(std::ostream& out, const ProblemResult& p, const TestResult& r, 
       << text(p.problem->key + " " + r.test->name) << "\" data-status=\"" << st << "\" data-simulated=\""
       << (r.test->replay.empty() ? 0 : 1) << "\">\n<h3><span class=\"status\">" << st << "</span> "
       << format_points(r.score) << "/" << format_points(r.test->points) << " " << text(r.test->name) << "</h3>\n";
+  if (!r.judged.empty()) {
+    out << "<ul class=\"judged\">\n";
+    for (const std::string& j : r.judged) out << "<li>judged: " << text(j) << "</li>\n";
+    out << "</ul>\n";
+  }
   if (r.score < r.test->points) {
     out << "<ul class=\"findings\">\n";
     for (const std::string& finding : r.findings) out << "<li>" << text(finding) << "</li>\n";

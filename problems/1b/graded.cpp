@@ -161,48 +161,65 @@ RunFigure q2_figure(Part part, const p1b::Result& mine, double bound) {
                     [part] { return decimate(reference_run(part).samples, q2_error); });
 }
 
-// The run went to its end and applied the problem set's law of `part` at every tick.
-bool ran_the_law(const Run& r, Part part, Check& check) {
-  if (!check.that(r.result.failure.empty(), "the run stopped early: " + r.result.failure)) return false;
-  switch (part) {
-    case Part::kTipPd:
-      return r.pin.check(check, "your PART1 controller", "Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p) + A (-kvj dq)");
-    case Part::kPseudoInverseNullspace:
-      return r.pin.check(check, "your PART2 controller",
-                         "Jv^T F + (I - Jv^T Jv+^T) (A (-kpj (q - q_d) - kvj dq) + g), aimed at x_d and q_d");
-    case Part::kDynamicallyConsistentNullspace:
-      return r.pin.check(check, "your PART3 controller",
-                         "Jv^T F + (I - Jv^T Jbar_v^T) (A (-kpj (q - q_d) - kvj dq) + g), aimed at x_d and q_d");
-    case Part::kTipPdWithoutJointDamping: break;  // not simulated
-  }
-  return true;
+// The law of `part` as its pin names it: who, the law test, the equation is the law test's.
+std::string whose(Part part) { return std::string("your ") + part_name(part) + " controller"; }
+const char* law_test(Part part) {
+  return part == Part::kTipPd ? "ii" : part == Part::kPseudoInverseNullspace ? "iii" : "iv";
 }
+
+// The statistic `statistic` of a run of `part` (`of` reads it from the run's Summary) in the
+// student's run and the reference's, with the check's bound: what a behaviour test judges.
+template <class Of>
+Judgement judgement(const std::string& statistic, const Hw2Api& api, Part part, Of of, double bound, double scale,
+                    const std::string& unit) {
+  Judgement j;
+  j.statistic = statistic, j.yours = of(run(api, part).result), j.bound = bound, j.unit_scale = scale, j.unit = unit;
+  j.reference = reference_statistic("1b " + statistic, [of, part] { return of(reference_run(part)); });
+  return j;
+}
+
+// The run of `part` went to its end.
+bool ran_to_the_end(const Run& r, Check& check) {
+  return check.that(r.result.failure.empty(), "the run stopped early: " + r.result.failure);
+}
+
+double tip_rms(const p1b::Result& r) { return r.summary.tip_error_rms; }
+double tip_max(const p1b::Result& r) { return r.summary.tip_error_max; }
+double q2_max(const p1b::Result& r) { return r.summary.q2_error_max; }
 
 void part1_holds_the_tip(const Hw2Api& api, Check& check) {
   check.figure(tip_figure(Part::kTipPd, run(api, Part::kTipPd).result, p1b::kPart1TipErrorRmsMax, "its RMS after 2 s"));
-  if (!ran_the_law(run(api, Part::kTipPd), Part::kTipPd, check)) return;
-  const p1b::Result& r = run(api, Part::kTipPd).result;
+  const Run& r = run(api, Part::kTipPd);
+  if (!ran_to_the_end(r, check)) return;
   // The tip starts 2.3 mm from x_d. A tip PD with p holds it to the mm scale; without p
   // (gravity at the tip) it would sag by about |p| / (kpx Lambda) ~ centimetres. 5 mm RMS.
-  check.at_most("tip error RMS after 2 s", r.summary.tip_error_rms, p1b::kPart1TipErrorRmsMax,
-                "The tip should converge to x_d = (-0.15, 0.81, 0.58) and stay there", 1e3, "mm");
+  judge_run(check, r.pin, whose(Part::kTipPd), law_test(Part::kTipPd),
+            {{judgement("PART1 tip error RMS after 2 s", api, Part::kTipPd, &tip_rms, p1b::kPart1TipErrorRmsMax, 1e3, "mm"),
+              "The tip should converge to x_d = (-0.15, 0.81, 0.58) and stay there"}});
 }
 
 void part3_holds_the_tip_while_q2_moves(const Hw2Api& api, Check& check) {
   const Part part3 = Part::kDynamicallyConsistentNullspace;
   check.figure(tip_figure(part3, run(api, part3).result, p1b::kPart3TipErrorMax, "its largest value after 2 s"));
   check.figure(q2_figure(part3, run(api, part3).result, p1b::kPart3Q2ErrorMax));
-  if (!ran_the_law(run(api, part3), part3, check)) return;
-  const p1b::Result& r = run(api, part3).result;
-  // Dynamically consistent: null-space torques cause no tip acceleration, so the tip error
-  // stays at the PART1 scale. Bound from the issue: 5 mm after 2 s.
-  check.at_most("max tip error after 2 s", r.summary.tip_error_max, p1b::kPart3TipErrorMax,
-                "With the projector I - Jv^T Jbar_v^T the joint task cannot move the tip", 1e3, "mm");
-  // A joint PD (kpj = 50, kvj = 20) following a sine of amplitude pi/8 at w = 2 pi / 10 lags
-  // with error amplitude (pi/8) |(-w^2 + j kvj w) / (kpj - w^2 + j kvj w)| = 0.096 rad
-  // (closed form of the second-order response). 0.15 rad leaves room for the coupling.
-  check.at_most("max q2 tracking error after 2 s", r.summary.q2_error_max, p1b::kPart3Q2ErrorMax,
-                "Joint 2 should follow q_d[1] = -pi/8 + pi/8 sin(2 pi t / 10)", 1.0, "rad");
+  const Run& r = run(api, part3);
+  if (!ran_to_the_end(r, check)) return;
+  judge_run(check, r.pin, whose(part3), law_test(part3),
+            {// Dynamically consistent: null-space torques cause no tip acceleration, so the tip
+             // error stays at the PART1 scale. Bound from the issue: 5 mm after 2 s.
+             {judgement("PART3 max tip error after 2 s", api, part3, &tip_max, p1b::kPart3TipErrorMax, 1e3, "mm"),
+              "With the projector I - Jv^T Jbar_v^T the joint task cannot move the tip"},
+             // A joint PD (kpj = 50, kvj = 20) following a sine of amplitude pi/8 at
+             // w = 2 pi / 10 lags with error amplitude
+             // (pi/8) |(-w^2 + j kvj w) / (kpj - w^2 + j kvj w)| = 0.096 rad (closed form of the
+             // second-order response). 0.15 rad leaves room for the coupling.
+             {judgement("PART3 max q2 tracking error after 2 s", api, part3, &q2_max, p1b::kPart3Q2ErrorMax, 1.0, "rad"),
+              "Joint 2 should follow q_d[1] = -pi/8 + pi/8 sin(2 pi t / 10)"}});
+}
+
+// PART2's tip error RMS over PART3's, in the student's runs or the reference's.
+double drift_ratio(const p1b::Result& part2, const p1b::Result& part3) {
+  return part2.summary.tip_error_rms / std::max(part3.summary.tip_error_rms, 1e-9);
 }
 
 void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
@@ -215,24 +232,33 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
   check.figure(q2_figure(part2, run(api, part2).result, p1b::kPart2Q2ErrorMax));
   check.figure(tip_figure(part3, run(api, part3).result, std::numeric_limits<double>::quiet_NaN(),
                           "its RMS after 2 s, at most a tenth of PART2's"));
-  if (!ran_the_law(run(api, part2), part2, check) || !ran_the_law(run(api, part3), part3, check)) return;
+  if (!ran_to_the_end(run(api, part2), check) || !ran_to_the_end(run(api, part3), check)) return;
   const p1b::Result& r2 = run(api, part2).result;
   const p1b::Result& r3 = run(api, part3).result;
-  // The lesson of problem 1b. With J+ the null-space torque leaves Jv^T (Jbar_v - Jv+)^T g
-  // (plus the projected joint task) acting on the tip, tens of newtons at these poses, while
-  // PART3 leaves none: the PART2 tip error must be at least ten times PART3's.
   // PART2 must still be the null-space law: its joint task keeps joint 2 near q_d (amplitude
   // pi/8 = 0.39 rad) even while the tip drifts, whereas an arm left without control (a
   // stub, zero torque) falls towards its hanging pose, more than 1 rad from q_d.
-  check.at_most("max q2 tracking error of PART2 after 2 s", r2.summary.q2_error_max, p1b::kPart2Q2ErrorMax,
-                "PART2 applies the joint task through its projector: joint 2 should still follow q_d", 1.0,
-                "rad");
-  const double ratio = r2.summary.tip_error_rms / std::max(r3.summary.tip_error_rms, 1e-9);
-  check.at_least("tip error RMS of PART2 (" + mm(r2.summary.tip_error_rms) + ") over PART3's (" +
-                     mm(r3.summary.tip_error_rms) + ")",
-                 ratio, p1b::kPart2OverPart3TipErrorRmsMin,
-                 "The pseudo-inverse projector is not dynamically consistent: its null-space torques "
-                 "accelerate the tip");
+  const Judged q2{judgement("PART2 max q2 tracking error after 2 s", api, part2, &q2_max, p1b::kPart2Q2ErrorMax, 1.0, "rad"),
+                  "PART2 applies the joint task through its projector: joint 2 should still follow q_d"};
+  // The lesson of problem 1b. With J+ the null-space torque leaves Jv^T (Jbar_v - Jv+)^T g
+  // (plus the projected joint task) acting on the tip, tens of newtons at these poses, while
+  // PART3 leaves none: the PART2 tip error must be at least ten times PART3's.
+  Judgement ratio;
+  ratio.statistic = "PART2's tip error RMS after 2 s over PART3's";
+  ratio.yours = drift_ratio(r2, r3), ratio.bound = p1b::kPart2OverPart3TipErrorRmsMin, ratio.upper = false;
+  ratio.reference = reference_statistic("1b tip error RMS of PART2 over PART3's", [] {
+    return drift_ratio(reference_run(Part::kPseudoInverseNullspace), reference_run(Part::kDynamicallyConsistentNullspace));
+  });
+  const Judged drift{ratio, "yours: " + mm(r2.summary.tip_error_rms) + " over " + mm(r3.summary.tip_error_rms) +
+                                ". The pseudo-inverse projector is not dynamically consistent: its null-space torques "
+                                "accelerate the tip"};
+  // Each run is judged on its own part's law; the ratio reads both runs.
+  if (!run(api, part3).pin.admits(check, whose(part3), law_test(part3), {ratio})) {
+    check.judged_note(q2.judgement.line());
+    check.judged_note(ratio.line());
+    return;
+  }
+  judge_run(check, run(api, part2).pin, whose(part2), law_test(part2), {q2, drift});
 }
 
 }  // namespace

@@ -137,9 +137,10 @@ void law(const Hw2Api& api, Check& check) {
   }
 }
 
-// The closed-loop run with the pin of its law: the first tick, if any, at which the torque was
-// not expected_torque() at that tick's State and Goal. The Goal is the one the run gave the law,
-// whose xddot_d is the student's 2(a) (graded by its own test at random times).
+// The closed-loop run with the pin of its law: the ticks, if any, at which the torque was not
+// expected_torque() at that tick's State and Goal. The run's feed-forward xddot_d is the
+// problem set's (the grader's closed forms), not the student's 2(a): 2(a) has its own test, so
+// a wrong 2(a) costs that test alone and cannot be answered differently during a run.
 struct Run {
   p2::Result result;
   LawPin pin{kLawTol};
@@ -161,7 +162,7 @@ const Run& run(const Hw2Api& api) {
       pin.see(s.t, expected_torque(s, goal), tau);
       return tau;
     };
-    made.result = p2::run(pinned, api.p2.desired_acceleration, options);
+    made.result = p2::run(pinned, problem_set_xddot_d, options);
     it = cache.emplace(key, std::move(made)).first;
   }
   return it->second;
@@ -232,91 +233,101 @@ void figure(const std::string& test, const Hw2Api& api, Check& check) {
   }
 }
 
-// The run went to its end and applied the problem set's law at every tick: the run's result.
-const p2::Result* ran_the_law(const Hw2Api& api, Check& check) {
+// The statistic `statistic` of a run (`of` reads it from the run's Summary) in the student's run
+// `mine` and the reference's, with the check's bound: what a behaviour test judges.
+template <class Of>
+Judgement judgement(const std::string& statistic, const p2::Result& mine, Of of, double bound, double scale,
+                    const std::string& unit) {
+  Judgement j;
+  j.statistic = statistic, j.yours = of(mine), j.bound = bound, j.unit_scale = scale, j.unit = unit;
+  j.reference = reference_statistic("2 " + statistic, [of] { return of(reference_run()); });
+  return j;
+}
+
+// Judges `judged` on the run, when it went to its end on the problem set's law or on a slip of
+// it that moved nothing the test judges (law_pin.hpp).
+void judge(const Hw2Api& api, Check& check, const std::vector<Judged>& judged) {
   const Run& r = run(api);
-  if (!check.that(r.result.failure.empty(), "the run stopped early: " + r.result.failure)) return nullptr;
-  if (!r.pin.check(check, "your controller",
-                   "J0^T (Lambda0 (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ xdot_d) + [vdot_d; wdot_d]) + p) "
-                   "+ N0^T (A (-kvj dq) + g)"))
-    return nullptr;
-  return &r.result;
+  if (!check.that(r.result.failure.empty(), "the run stopped early: " + r.result.failure)) return;
+  judge_run(check, r.pin, "your controller", "c", judged);
 }
 
 void position_tracking(const Hw2Api& api, Check& check) {
   figure("position", api, check);
-  const p2::Result* ran = ran_the_law(api, check);
-  if (!ran) return;
-  const p2::Result& r = *ran;
+  const p2::Result& r = run(api).result;
   // Without the feed-forward acceleration the PD lags y_d (0.1 m at w = 2 pi/5) by
   // 0.1 w^2 / |kpx - w^2 + j kvx w| = 2.9 mm and z_d (0.05 m at 2w) by
   // 0.05 (2w)^2 / |kpx - 4 w^2 + 2 j kvx w| = 4.7 mm: 3.9 mm RMS (closed form of the
   // second-order error dynamics). With it, only the uncompensated Coriolis forces remain
   // (tenths of a mm on the reference). 1 mm RMS separates the two.
-  check.at_most("position error RMS after 1 s", r.summary.position_error_rms, p2::kPositionErrorRmsMax,
-                "link7's origin should follow x_d = (0, 0.5 + 0.1 cos(2 pi t/5), 0.65 - 0.05 cos(4 pi t/5))",
-                1e3, "mm");
+  judge(api, check,
+        {{judgement("position error RMS after 1 s", r, [](const p2::Result& x) { return x.summary.position_error_rms; },
+                    p2::kPositionErrorRmsMax, 1e3, "mm"),
+          "link7's origin should follow x_d = (0, 0.5 + 0.1 cos(2 pi t/5), 0.65 - 0.05 cos(4 pi t/5))"}});
 }
 
 void orientation_tracking(const Hw2Api& api, Check& check) {
   figure("orientation", api, check);
-  const p2::Result* ran = ran_the_law(api, check);
-  if (!ran) return;
-  const p2::Result& r = *ran;
+  const p2::Result& r = run(api).result;
   // lambda_d turns about a fixed axis by 2a = (pi/2) cos(w t): angular acceleration amplitude
   // (pi/2) w^2 = 2.5 rad/s^2. Without feed-forward the PD lags it by
   // 2.5 / |kpx - w^2 + j kvx w| = 0.045 rad (0.032 rad RMS); with it the error is set by the
   // uncompensated Coriolis forces (about a milliradian). 0.01 rad (0.57 deg) RMS separates them.
-  check.at_most("orientation error RMS after 1 s (angle of R R_d^T)", r.summary.orientation_error_rms, p2::kOrientationErrorRmsMax,
-                "link7 should turn with lambda_d(t)", 1.0 / kDeg, "deg");
+  judge(api, check,
+        {{judgement("orientation error RMS after 1 s (angle of R R_d^T)", r,
+                    [](const p2::Result& x) { return x.summary.orientation_error_rms; }, p2::kOrientationErrorRmsMax,
+                    1.0 / kDeg, "deg"),
+          "link7 should turn with lambda_d(t)"}});
 }
 
 void euler_parameters_stay_continuous(const Hw2Api& api, Check& check) {
   figure("lambda", api, check);
-  const p2::Result* ran = ran_the_law(api, check);
-  if (!ran) return;
-  const p2::Result& r = *ran;
-  // lambda comes from an orthonormal R, normalised: unit to rounding.
-  check.that(r.summary.lambda_norm_error_max < p2::kLambdaNormErrorMax, "|lambda| drifted from 1");
-  // |lambda(t + dt) - lambda(t)| = |E_r w| dt = |w| dt / 2. The iiwa's joint speed limits sum
-  // to 16 rad/s, so a continuous lambda moves at most 8e-3 per 1 ms step; 0.01 allows that.
-  // A jump of about 2 is lambda flipping to -lambda: the orientation went half a turn away
-  // from lambda_d, where lambda . lambda_d changes sign.
-  check.at_most("largest change of lambda in one 1 ms step", r.summary.lambda_step_max, p2::kLambdaStepMax,
-                "lambda flips sign only when link7 is half a turn away from lambda_d");
+  const p2::Result& r = run(api).result;
+  judge(api, check,
+        {// lambda comes from an orthonormal R, normalised: unit to rounding.
+         {judgement("largest ||lambda| - 1| over the run", r,
+                    [](const p2::Result& x) { return x.summary.lambda_norm_error_max; }, p2::kLambdaNormErrorMax, 1.0, ""),
+          "|lambda| drifted from 1"},
+         // |lambda(t + dt) - lambda(t)| = |E_r w| dt = |w| dt / 2. The iiwa's joint speed limits
+         // sum to 16 rad/s, so a continuous lambda moves at most 8e-3 per 1 ms step; 0.01 allows
+         // that. A jump of about 2 is lambda flipping to -lambda: the orientation went half a
+         // turn away from lambda_d, where lambda . lambda_d changes sign.
+         {judgement("largest change of lambda in one 1 ms step", r,
+                    [](const p2::Result& x) { return x.summary.lambda_step_max; }, p2::kLambdaStepMax, 1.0, ""),
+          "lambda flips sign only when link7 is half a turn away from lambda_d"}});
 }
 
 void joints_stay_near_their_limits(const Hw2Api& api, Check& check) {
   figure("limits", api, check);
-  const p2::Result* ran = ran_the_law(api, check);
-  if (!ran) return;
-  const p2::Result& r = *ran;
+  const p2::Result& r = run(api).result;
   // The problem set's law has no joint-limit task and the simulation does not enforce limits.
   // The task fixes six of the seven joints' motions and the damped self-motion follows the
   // task (next test), so a correct law drives the same joint path as the reference, whose
   // joint 1 reaches 171.9 deg at the far end of the y sweep, 1.9 deg past its 170 deg limit.
   // 5 deg allows that and flags an arm that swings away from the task's joint path.
-  check.at_most("largest excursion past a URDF joint limit (joint " +
-                    std::to_string(r.summary.joint_limit_joint + 1) + ")",
-                -r.summary.joint_limit_margin, p2::kJointLimitExcessMax, "the joints should stay within their URDF limits",
-                1.0 / kDeg, "deg");
+  judge(api, check,
+        {{judgement("largest excursion past a URDF joint limit", r,
+                    [](const p2::Result& x) { return -x.summary.joint_limit_margin; }, p2::kJointLimitExcessMax,
+                    1.0 / kDeg, "deg"),
+          "the joints should stay within their URDF limits (yours: joint " +
+              std::to_string(r.summary.joint_limit_joint + 1) + " comes nearest)"}});
 }
 
 void self_motion_is_damped(const Hw2Api& api, Check& check) {
   figure("drift", api, check);
-  const p2::Result* ran = ran_the_law(api, check);
-  if (!ran) return;
-  const p2::Result& r = *ran;
+  const p2::Result& r = run(api).result;
   // The iiwa has one redundant degree of freedom. N0^T A (-kvj dq) damps its self-motion at
   // rate kvj = 20 /s (time constant 0.05 s, a hundredth of the 5 s period), so the joints
   // follow the periodic task with a period of their own, up to a slow geometric drift (the
   // damped joint path of a closed task path need not close: under a degree per period on the
   // reference). Undamped, the self-motion keeps what the Coriolis coupling pumps into it and
   // wanders by tens of degrees per period. 0.1 rad (5.7 deg) separates the two.
-  check.at_most("joint drift between t = 5 s and t = 10 s (joint " +
-                    std::to_string(r.summary.joint_drift_joint + 1) + ")",
-                r.summary.joint_drift_per_period, p2::kJointDriftPerPeriodMax, "the arm should repeat its motion every 5 s period",
-                1.0 / kDeg, "deg");
+  judge(api, check,
+        {{judgement("joint drift between t = 5 s and t = 10 s (largest over the joints)", r,
+                    [](const p2::Result& x) { return x.summary.joint_drift_per_period; }, p2::kJointDriftPerPeriodMax,
+                    1.0 / kDeg, "deg"),
+          "the arm should repeat its motion every 5 s period (joint " +
+              std::to_string(r.summary.joint_drift_joint + 1) + " drifts most)"}});
 }
 
 }  // namespace

@@ -149,84 +149,89 @@ void figure(const Hw2Api& api, Check& check, Value value, const std::string& qua
                           [value] { return decimate(reference_run().samples, value); }));
 }
 
-// The run went to its end and applied the problem set's law at every tick: the run's result.
-const p3::Result* ran_the_law(const Hw2Api& api, Check& check) {
-  const Run& r = run(api);
-  if (!check.that(r.result.failure.empty(), "the run stopped early: " + r.result.failure)) return nullptr;
-  if (!r.pin.check(check, "your controller",
-                   "J0^T (Lambda0 Omega (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ xdot_d) + [vdot_d; wdot_d]) "
-                   "+ p + Omega-bar F_d) + N0^T (A (-kvj dq) + g)"))
-    return nullptr;
-  return &r.result;
+// The statistic `statistic` of a run (`of` reads it from the run's Summary) in the student's run
+// and the reference's, with the check's bound: what a behaviour test judges.
+template <class Of>
+Judgement judgement(const std::string& statistic, const Hw2Api& api, Of of, double bound, double scale,
+                    const std::string& unit) {
+  Judgement j;
+  j.statistic = statistic, j.yours = of(run(api).result), j.bound = bound, j.unit_scale = scale, j.unit = unit;
+  j.reference = reference_statistic("3 " + statistic, [of] { return of(reference_run()); });
+  return j;
 }
 
-bool touched(const p3::Result& r, Check& check) {
-  return check.that(r.summary.first_contact_time >= 0.0, "the tool never pushed on the plane");
+// Judges `judged` on the run, when it went to its end on the problem set's law or on a slip of
+// it that moved nothing the test judges (law_pin.hpp); `contact`: only if the tool touched the plane.
+void judge(const Hw2Api& api, Check& check, const std::vector<Judged>& judged, bool contact) {
+  const Run& r = run(api);
+  if (!check.that(r.result.failure.empty(), "the run stopped early: " + r.result.failure)) return;
+  if (contact && !check.that(r.result.summary.first_contact_time >= 0.0, "the tool never pushed on the plane")) return;
+  judge_run(check, r.pin, "your controller", "b", judged);
 }
 
 void contact_force(const Hw2Api& api, Check& check) {
   figure(api, check, force_error, "force error |F_x - 10 N|", "N", 1.0, p3::kForceErrorMeanMax, "its mean after 1 s");
-  const p3::Result* ran = ran_the_law(api, check);
-  if (!ran || !touched(*ran, check)) return;
-  const p3::Result& r = *ran;
   // In contact the plane removes x, and the law's force is Omega-bar F_d + p: the tool pushes
   // F_x = 10 N less the uncompensated Coriolis and centrifugal force along x (the reference's
   // mean F_x is 9.98 N). Bullet's solver shares the push among the disc's 3-4 contact points
   // unevenly from step to step, so single steps scatter by up to 4.5 N about the mean: the
   // reference's mean |F_x - 10| is 0.41 N, its 10 ms average stays within 0.47 N of 10 N.
   // 1 N allows that scatter with margin; 10 N through Lambda0 misses by newtons.
-  check.at_most("mean |F_x - 10 N| after 1 s", r.summary.force_error_mean, p3::kForceErrorMeanMax,
-                "the tool should push on the plane with the desired 10 N", 1.0, "N");
+  judge(api, check,
+        {{judgement("mean |F_x - 10 N| after 1 s", api, [](const p3::Result& x) { return x.summary.force_error_mean; },
+                    p3::kForceErrorMeanMax, 1.0, "N"),
+          "the tool should push on the plane with the desired 10 N"}},
+        true);
 }
 
 void tool_flat(const Hw2Api& api, Check& check) {
   figure(api, check, tilt, "tilt of the tool against the plane", "deg", 1.0 / kDeg, p3::kTiltMax, "its largest value after 1 s");
-  const p3::Result* ran = ran_the_law(api, check);
-  if (!ran || !touched(*ran, check)) return;
-  const p3::Result& r = *ran;
   // Pressed on a rigid plane with zero moment commanded about y and z, the disc can tilt only
   // as far as the solver lets its rim sink in: 0.002 deg on the reference. 0.5 deg would lift
   // the opposite rim of the 0.08 m disc 0.35 mm off the plane: not flat any more.
-  check.at_most("largest tilt of the tool against the plane after 1 s", r.summary.tilt_max, p3::kTiltMax,
-                "link7's z axis should stay along +x: the tool face flat on the plane", 1.0 / kDeg, "deg");
+  judge(api, check,
+        {{judgement("largest tilt of the tool against the plane after 1 s", api,
+                    [](const p3::Result& x) { return x.summary.tilt_max; }, p3::kTiltMax, 1.0 / kDeg, "deg"),
+          "link7's z axis should stay along +x: the tool face flat on the plane"}},
+        true);
 }
 
 void yz_tracking(const Hw2Api& api, Check& check) {
   figure(api, check, yz_error, "|(y - y_d, z - z_d)|", "mm", 1e3, p3::kYzErrorRmsMax, "its RMS after 1 s");
-  const p3::Result* ran = ran_the_law(api, check);
-  if (!ran) return;
-  const p3::Result& r = *ran;
   // As in problem 2 (problems/2/graded.cpp): without the feed-forward acceleration the PD lags
   // y_d and z_d by 3.9 mm RMS (closed form); with it only the uncompensated Coriolis forces
   // remain (0.27 mm RMS on the reference). 1 mm separates the two.
-  check.at_most("RMS |(y - y_d, z - z_d)| after 1 s", r.summary.yz_error_rms, p3::kYzErrorRmsMax,
-                "link7's origin should follow y_d = 0.5 + 0.1 cos(2 pi t/5), z_d = 0.65 - 0.05 cos(4 pi t/5)",
-                1e3, "mm");
+  judge(api, check,
+        {{judgement("RMS |(y - y_d, z - z_d)| after 1 s", api, [](const p3::Result& x) { return x.summary.yz_error_rms; },
+                    p3::kYzErrorRmsMax, 1e3, "mm"),
+          "link7's origin should follow y_d = 0.5 + 0.1 cos(2 pi t/5), z_d = 0.65 - 0.05 cos(4 pi t/5)"}},
+        false);
 }
 
 void rotation_tracking(const Hw2Api& api, Check& check) {
   figure(api, check, rotation_x_error, "rotation-about-x error", "deg", 1.0 / kDeg, p3::kRotationXErrorRmsMax, "its RMS after 1 s");
-  const p3::Result* ran = ran_the_law(api, check);
-  if (!ran) return;
-  const p3::Result& r = *ran;
   // lambda_d turns link7 about x by 2a = (pi/2) cos(2 pi t/5). As in problem 2, without
   // feed-forward the PD lags it by 0.032 rad RMS; the reference's error is 0.3 mrad RMS (the
   // uncompensated Coriolis forces). 0.01 rad (0.57 deg) separates the two.
-  check.at_most("RMS rotation-about-x error after 1 s", r.summary.rotation_x_error_rms, p3::kRotationXErrorRmsMax,
-                "link7 should turn about x with lambda_d(t)", 1.0 / kDeg, "deg");
+  judge(api, check,
+        {{judgement("RMS rotation-about-x error after 1 s", api,
+                    [](const p3::Result& x) { return x.summary.rotation_x_error_rms; }, p3::kRotationXErrorRmsMax,
+                    1.0 / kDeg, "deg"),
+          "link7 should turn about x with lambda_d(t)"}},
+        false);
 }
 
 void contact_kept(const Hw2Api& api, Check& check) {
   figure(api, check, push, "push F_x on the plane (contact while above 0)", "N", 1.0, std::numeric_limits<double>::quiet_NaN(), "the steps after 1 s at which it is 0");
-  const p3::Result* ran = ran_the_law(api, check);
-  if (!ran || !touched(*ran, check)) return;
-  const p3::Result& r = *ran;
   // A constant 10 N push keeps the frictionless tool pressed on the plane: starting on it at
   // rest (p3::initial_q), the reference never leaves it, not for one 1 ms step. Counted after
   // the first second, as the other behaviour tests.
-  check.that(r.summary.contact_lost_samples <= p3::kContactLostSamplesMax,
-             "the tool left the plane after the first second, for " +
-                 std::to_string(r.summary.contact_lost_samples) + " steps of 1 ms in all");
+  judge(api, check,
+        {{judgement("1 ms steps without contact after the first second", api,
+                    [](const p3::Result& x) { return static_cast<double>(x.summary.contact_lost_samples); },
+                    static_cast<double>(p3::kContactLostSamplesMax), 1.0, "steps"),
+          "the tool should stay pressed on the plane"}},
+        true);
 }
 
 }  // namespace

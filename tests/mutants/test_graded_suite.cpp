@@ -145,3 +145,25 @@ TEST_CASE("every known mistake aims at tests that exist and says what the proble
     for (const std::string& name : mistake.caught_by) CHECK(tests.count(name) == 1);
   }
 }
+
+// Issue 46: a run's inputs that another test grades come from the grader. Problem 2's runs take
+// xddot_d from the problem set's closed forms, so a 2(a) that returns zero (or answers a run
+// otherwise than its own test) costs test a alone: before, it cost the five runs' 10 points too.
+TEST_CASE("a wrong 2(a) costs its own test alone: problem 2's runs take xddot_d from the grader") {
+  grading::Hw2Api api = grading::linked_api();
+  long calls = 0;
+  api.p2.desired_acceleration = [&calls](double) {
+    ++calls;
+    return opspace::hw2::p2::Vector7d::Zero().eval();
+  };
+  api.identity = 90;  // its own simulated runs
+  std::set<std::string> failed;
+  for (const grading::Problem& problem : grading::graded_suite()) {
+    if (problem.key != "2") continue;
+    for (const grading::TestResult& r : grading::run_tests(problem.tests, api))
+      if (r.score < r.test->points) failed.insert(r.test->name);
+  }
+  INFO("tests that failed:" << join(failed));
+  CHECK(failed == std::set<std::string>{"a. xddot_d is the second time derivative of x_d(t), as in the closed forms of 2(a)"});
+  CHECK(calls < 100);  // the formula tests' few calls; a run would make 10000
+}
