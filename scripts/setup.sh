@@ -12,7 +12,7 @@ OPSPACE_BUILD="$OPSPACE_ROOT/build/release"
 # leaves it out).
 OPSPACE_PACKAGES=(g++ make cmake ninja-build pkg-config libeigen3-dev doctest-dev libbullet-dev
                   liburdfdom-dev libbenchmark-dev libssl-dev libseccomp-dev nlohmann-json3-dev
-                  libcpp-httplib-dev)
+                  libcpp-httplib-dev zlib1g-dev)
 # The pictures of a run (docs/visuals.md): gnuplot draws the plots (fonts for its PNGs), node
 # and npm bundle the 3D replay viewer at build time (npm fetches over TLS: ca-certificates).
 # Optional: if they cannot be installed, the build, the grader and the programs still work and

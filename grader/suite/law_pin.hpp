@@ -72,22 +72,21 @@ class LawPin {
               const std::vector<Judgement>& judged) const {
     if (!check.that(ticks_ > 0, whose + " was never called in the run")) return false;
     if (!differs_) return true;
-    const std::string how = whose + "'s torque is not the problem set's law along the run (the law test " + law_test +
-                            " shows which term): it differs from " + at(first_t_) + " on, by at most " +
-                            torque(largest_) + " (" + percent(largest_share_) + " of the law's torque) at " +
-                            at(largest_t_);
+    const std::string differs = whose + "'s torque is not the problem set's law along the run (the law test " +
+                                law_test + " shows which term): it differs by up to " + torque(largest_) + ", " +
+                                percent(largest_share_) + " of the law's torque, at " + at(largest_t_);
     if (!check.that(largest_share_ <= kDifferentLaw,
-                    how + ", more than " + percent(kDifferentLaw) +
+                    differs + ", more than " + percent(kDifferentLaw) +
                         ": a different law, which earns no points for its behaviour, whatever the run does"))
       return false;
     for (const Judgement& j : judged) {
       const bool moved = !(std::abs(j.yours - j.reference) <= kMovedShare * std::abs(j.bound));
-      if (!check.that(!moved, how + "; a slip, but it moved " + j.line() + ", more than a tenth of the bound " +
-                                  "from the reference's: this test earns none"))
+      if (!check.that(!moved, differs + ": a slip, but it moved the judged " + j.statistic +
+                                  " more than a tenth of the bound from the reference's: this test earns none"))
         return false;
     }
-    check.judged_note(how + "; a slip that leaves what this test judges within a tenth of the bound of the "
-                            "reference's: the run is judged as it is (the law test alone costs points)");
+    check.judged_note("a slip of the law (" + percent(largest_share_) + " of its torque at most; the law test " +
+                      law_test + " costs its points) that moved nothing this test judges: the run is judged as it is");
     return true;
   }
 
@@ -121,7 +120,7 @@ inline void judge_run(Check& check, const LawPin& pin, const std::string& whose,
   std::vector<Judgement> judgements;
   for (const Judged& j : judged) judgements.push_back(j.judgement);
   if (!pin.admits(check, whose, law_test, judgements)) {
-    for (const Judgement& j : judgements) check.judged_note(j.line());
+    for (const Judgement& j : judgements) check.show(j);
     return;
   }
   for (const Judged& j : judged) check.judge(j.judgement, j.meaning);

@@ -1,6 +1,7 @@
 // Machine-readable grades: Gradescope's results.json (written by nlohmann-json) and JUnit XML.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <sstream>
 
 #include "grader.hpp"
+#include "raster.hpp"
 #include "report_html.hpp"
 #include "student_text.hpp"
 
@@ -44,6 +46,36 @@ std::string xml_text(const std::string& text) {
   return out;
 }
 
+// A wrong matrix or vector's entries as its grid of text, each "expected / yours", the wrong ones
+// marked "!" after: for a <pre> (Gradescope's sanitizer may strip a <table>, never a <pre>).
+std::string entry_grid(const EntryTable& e) {
+  if (e.what.empty() || e.expected.size() > 100) return "";
+  const double scale = std::max(1.0, e.expected.cwiseAbs().maxCoeff());
+  const auto cell = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return std::string(b);
+  };
+  std::vector<std::string> cells;
+  std::size_t width = 0;
+  for (Eigen::Index i = 0; i < e.expected.rows(); ++i)
+    for (Eigen::Index j = 0; j < e.expected.cols(); ++j) {
+      const double x = e.expected(i, j), c = e.computed(i, j);
+      const bool wrong = !std::isfinite(c) || std::abs(c - x) > e.tol * scale;
+      cells.push_back(cell(x) + " / " + cell(c) + (wrong ? " !" : ""));
+      width = std::max(width, cells.back().size());
+    }
+  std::string out = e.what + ", each entry expected / yours (! wrong):\n";
+  std::size_t k = 0;
+  for (Eigen::Index i = 0; i < e.expected.rows(); ++i) {
+    out += "  [";
+    for (Eigen::Index j = 0; j < e.expected.cols(); ++j, ++k)
+      out += " " + cells[k] + std::string(width - cells[k].size(), ' ') + (j + 1 < e.expected.cols() ? " |" : "");
+    out += " ]\n";
+  }
+  return out;
+}
+
 // The findings and hint; for a failed simulated test with `seed`, its runs as text tables
 // (results.json shows text alone: docs/grader.md) and the command that replays it.
 std::string feedback(const TestResult& r, std::uint64_t seed = 0) {
@@ -52,6 +84,7 @@ std::string feedback(const TestResult& r, std::uint64_t seed = 0) {
   for (const std::string& f : r.findings) text += "- " + f + "\n";
   const bool failed = r.score < r.test->points;
   if (failed && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";
+  if (failed) text += entry_grid(r.table);
   if (failed && seed != 0) {
     for (const RunFigure& f : r.figures) text += run_table(f);
     const std::string replay = replay_command(*r.test, seed);
@@ -59,6 +92,40 @@ std::string feedback(const TestResult& r, std::uint64_t seed = 0) {
   }
   if (!r.printed.empty()) text += "your code printed:\n" + quote_block(r.printed, "");
   return text;
+}
+
+// A figure for Gradescope: its caption as text and its plot as a PNG in a data: URI, the form
+// Gradescope's sanitized HTML keeps (docs/grader.md).
+std::string figure_html(const RunFigure& f) {
+  std::string caption = f.quantity + (f.unit.empty() ? "" : " (" + f.unit + ")") +
+                        ": your run in red, the reference's in blue";
+  if (std::isfinite(f.bound)) caption += ", the bound dashed green";
+  if (f.judged_from > 0.0) caption += "; the shaded start is not judged";
+  caption += ". Judged: " + f.judged + ".";
+  std::string alt;  // an attribute's value: its quotes escaped too
+  for (const char c : html_escape(f.quantity)) alt += c == '"' ? std::string("&quot;") : std::string(1, c);
+  return "<p>" + html_escape(caption) + "</p>\n<img alt=\"" + alt +
+         "\" src=\"data:image/png;base64," + base64(png_plot(f)) + "\">\n";
+}
+
+// feedback() as Gradescope's HTML: the text in a <pre> (for a failed test with its wrong matrix's
+// grid), then each figure of a failed test as a picture (the text tables of the runs are left
+// out). Only <pre>, <p> and <img> with alt and a data:image/png source: what the strictest
+// sanitizer documented for Gradescope's Rails keeps (docs/grader.md).
+std::string feedback_html(const TestResult& r, std::uint64_t seed) {
+  std::string text;
+  for (const std::string& j : r.judged) text += "judged: " + j + "\n";
+  for (const std::string& f : r.findings) text += "- " + f + "\n";
+  const bool failed = r.score < r.test->points;
+  if (failed && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";
+  const std::string replay = failed && seed != 0 ? replay_command(*r.test, seed) : "";
+  if (!replay.empty()) text += "replay it on your machine: " + replay + "\n";
+  if (!r.printed.empty()) text += "your code printed:\n" + quote_block(r.printed, "");
+  if (failed) text += entry_grid(r.table);
+  std::string out = "<pre>" + html_escape(text) + "</pre>\n";
+  if (!failed) return out;
+  for (const RunFigure& f : r.figures) out += figure_html(f);
+  return out;
 }
 
 // Gradescope's tags of a test: the known mistake named for it, if any.
@@ -134,8 +201,9 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
                            {"score", number(r.score)},
                            {"max_score", number(r.test->points)},
                            {"status", r.score >= r.test->points ? "passed" : "failed"},
-                           {"output", html_escape(feedback(r, settings.seed))},
-                           {"output_format", "text"},
+                           {"output", settings.format == "text" ? html_escape(feedback(r, settings.seed))
+                                                                 : feedback_html(r, settings.seed)},
+                           {"output_format", settings.format},
                            {"tags", tags(r)},
                            {"visibility", is_hidden(p, r, settings.hidden) ? settings.hidden_as : "visible"}});
     }
@@ -151,7 +219,7 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
                      {"execution_time", number(seconds)},
                      {"output", html_escape(summary.str())},
                      {"output_format", "text"},
-                     {"test_output_format", "text"},
+                     {"test_output_format", settings.format},
                      {"test_name_format", "text"},
                      {"visibility", "visible"},
                      {"stdout_visibility", "hidden"},

@@ -31,6 +31,10 @@ struct Recording {
 /// A copy of `api` whose functions also record their calls in `recording`.
 Hw2Api recorded(const Hw2Api& api, Recording& recording);
 
+/// Whether every answer of `recording` is zero, as the untouched stubs' are (and none is
+/// missing): code not written yet, which no known mistake explains.
+bool not_written_yet(const Recording& recording);
+
 /// "likely mistake: ...; the problem set asks ..." for the first mistake of `catalogue` aimed at
 /// `test` that reproduces every answer of `recording` (empty if none does).
 std::string diagnose(const std::vector<Mistake>& catalogue, const std::string& test, const Recording& recording);

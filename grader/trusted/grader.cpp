@@ -331,7 +331,8 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   if (!options.gradescope_path.empty()) {
     written &= write_file(options.gradescope_path, "results.json",
                           [&](std::ostream& out) {
-                            write_gradescope(out, results, seconds, {options.hidden, options.hidden_as, options.seed});
+                            write_gradescope(out, results, seconds,
+                                             {options.hidden, options.hidden_as, options.seed, options.gradescope_format});
                           });
   }
   if (!options.junit_path.empty()) {

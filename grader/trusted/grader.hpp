@@ -26,6 +26,7 @@ struct GraderOptions {
   std::string html_path;            ///< the report as a page (report_html.hpp), if not empty
   std::vector<std::string> hidden;  ///< tests whose name contains one of these are hidden
   std::string hidden_as = "after_published";  ///< their visibility in results.json (--hidden-visibility)
+  std::string gradescope_format = "html";     ///< results.json's tests' output_format (--gradescope-format)
   bool isolate = true;              ///< the sandbox (false: debugging only)
   std::uint64_t seed = 0;           ///< random inputs; 0: draw a new seed
   std::string user;                 ///< when root: a named account that runs student code (empty: the grading's own)
@@ -49,11 +50,14 @@ struct GradescopeSettings {
   std::vector<std::string> hidden;            ///< tests whose "<key> <name>" contains one of these
   std::string hidden_as = "after_published";  ///< their visibility: after_published or after_due_date
   std::uint64_t seed = 0;                     ///< the run's seed (a retry replays it)
+  /// The tests' output_format: "html" (each failed simulated test's plot as a PNG, a wrong
+  /// matrix as a table, every text escaped) or "text" (the plot as a table of samples).
+  std::string format = "html";
 };
 
 /// Gradescope's results.json: score (the whole grade), max_score, execution_time, output (one
 /// line per problem counting the tests shown), output_format "text", and tests[] with name,
-/// score, max_score, status, output and visibility (`hidden_as` for the hidden tests, else
+/// score, max_score, status, output (in `settings.format`) and visibility (`hidden_as` for the hidden tests, else
 /// "visible"); every text HTML-escaped. extra_data.grader holds the seed and grader_faults().
 void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds,
                       const GradescopeSettings& settings);

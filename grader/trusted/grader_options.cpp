@@ -42,7 +42,7 @@ bool parse_timeout(const std::string& text, GraderOptions& options, const char* 
 int grader_usage(std::ostream& out, const char* program, double default_timeout, int code) {
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
       << "          [--gradescope FILE] [--junit FILE] [--html FILE] [--hidden TEXT]... [--sandbox-user NAME]\n"
-      << "          [--unprotected] [--hidden-visibility WHEN] [--no-isolation]\n"
+      << "          [--unprotected] [--hidden-visibility WHEN] [--gradescope-format FORMAT] [--no-isolation]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
   for (const Problem& p : graded_suite()) {
@@ -55,6 +55,8 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "                 KEY=SECONDS sets problem KEY's alone (repeatable)\n"
       << "  --seed         replay the random inputs of an earlier run (its report prints the seed)\n"
       << "  --gradescope   also write Gradescope's results.json to FILE\n"
+      << "  --gradescope-format html (default: plots as pictures, matrices as tables) or text\n"
+      << "                 (plots as tables of samples): results.json's tests' output_format\n"
       << "  --junit        also write JUnit XML to FILE\n"
       << "  --html         also write the report as a page to FILE, with each simulated test's run\n"
       << "                 plotted (scripts/grade: out/grade/report.html)\n"
@@ -109,6 +111,13 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
       }
     } else if (arg == "--gradescope" && has_value) {
       options.gradescope_path = argv[++i];
+    } else if (arg == "--gradescope-format" && has_value) {
+      options.gradescope_format = argv[++i];
+      if (options.gradescope_format != "html" && options.gradescope_format != "text") {
+        std::cerr << argv[0] << ": --gradescope-format is html or text, not '" << options.gradescope_format << "'\n";
+        exit_code = 2;
+        return false;
+      }
     } else if (arg == "--junit" && has_value) {
       options.junit_path = argv[++i];
     } else if (arg == "--html" && has_value) {

@@ -114,8 +114,23 @@ std::string Judgement::line() const {
          value(bound, unit_scale, unit) + (met ? ": met" : ": not met");
 }
 
-bool Check::judge(const Judgement& j, const std::string& meaning) {
+double plotted_statistic(const RunFigure& f, const Series& s) {
+  if (s.v.empty() || f.plotted == Plotted::kSeries) return std::numeric_limits<double>::quiet_NaN();
+  if (f.plotted != Plotted::kLargest) return s.v.back();
+  double largest = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < s.t.size() && k < s.v.size(); ++k)
+    if (s.t[k] >= f.judged_from) largest = std::isnan(s.v[k]) ? s.v[k] : std::max(largest, s.v[k]);
+  return largest;
+}
+
+void Check::show(const Judgement& j) {
   judged_.push_back(j.line());
+  for (RunFigure& f : figures_)
+    if (!f.draws.empty() && f.draws == j.statistic) f.verdict_yours = j.yours, f.verdict_reference = j.reference;
+}
+
+bool Check::judge(const Judgement& j, const std::string& meaning) {
+  show(j);
   return j.upper ? at_most(j.statistic, j.yours, j.bound, meaning, j.unit_scale, j.unit)
                  : at_least(j.statistic, j.yours, j.bound, meaning, j.unit_scale, j.unit);
 }
@@ -215,7 +230,10 @@ std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw
       const Printed printed = runner->end_test();
       if (printed.total > 0) result.printed = student_block(printed.text, RunnerProcess::kMaxPrinted, printed.total);
     }
-    if (catalogue && result.score < test.points && !result.interrupted) {
+    if (catalogue && result.score < test.points && !result.interrupted && not_written_yet(recording)) {
+      result.findings.push_back("not written yet: every value your code returned in this test is zero, as the "
+                                "untouched stub's are: fill in its FILL ME IN");
+    } else if (catalogue && result.score < test.points && !result.interrupted) {
       const std::string likely = diagnose(*catalogue, test.name, recording);
       if (!likely.empty()) {
         result.findings.push_back(likely);

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 #include <sstream>
 
+#include "raster.hpp"
 #include "student_text.hpp"
 
 namespace opspace::grading {
@@ -37,10 +39,23 @@ std::string num(double v, int digits) {
   return buffer;
 }
 
+// v in the fewest significant digits (up to 17) that read back as v: a data- attribute's
+// number, which the tests compare with the verdict's to the last bit.
+std::string exact(double v) {
+  if (!std::isfinite(v)) return "NaN";
+  char buffer[40];
+  for (int digits = 6; digits < 17; ++digits) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
+    if (std::strtod(buffer, nullptr) == v) return buffer;
+  }
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
 // "0.01 0.02 ...": a series' values for a data- attribute.
 std::string joined(const std::vector<double>& values, int digits) {
   std::string out;
-  for (const double v : values) out += (out.empty() ? "" : " ") + num(v, digits);
+  for (const double v : values) out += (out.empty() ? "" : " ") + (digits > 16 ? exact(v) : num(v, digits));
   return out;
 }
 
@@ -171,6 +186,42 @@ std::string svg_plot(const RunFigure& f) {
   return out.str();
 }
 
+std::string png_plot(const RunFigure& f) {
+  enum Colour : std::uint8_t { kPaper, kShade, kGrid, kAxis, kStudent, kReference, kBound, kInk };
+  Raster r(static_cast<int>(kWidth), static_cast<int>(kHeight),
+           {0xffffff, 0xf2f2f2, 0xe6e6e6, 0x888888, 0xd62728, 0x1f77b4, 0x2ca02c, 0x222222});
+  const double t_end = end_time(f);
+  const Range y = y_range(f);
+  const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
+  const auto px = [&](double t) { return kLeft + w * t / t_end; };
+  const auto py = [&](double v) { return kTop + h * (1.0 - y.at(v)); };
+  if (f.judged_from > 0.0) r.rect(kLeft, kTop, px(std::min(f.judged_from, t_end)), kTop + h, kShade);
+  const double dt = tick_step(t_end, 8);
+  for (double t = 0.0; t <= t_end * (1 + 1e-9); t += dt) r.number(num(t, 4), px(t) - 3.0 * num(t, 4).size(), kHeight - kBottom + 12, kInk);
+  std::vector<double> ticks;
+  if (y.log) {
+    for (double v = y.lo; v <= y.hi * (1 + 1e-9); v *= 10.0) ticks.push_back(v);
+  } else {
+    const double dv = tick_step(y.hi - y.lo, 5);
+    for (double v = std::ceil(y.lo / dv) * dv; v <= y.hi * (1 + 1e-9) + 1e-300; v += dv) ticks.push_back(v);
+  }
+  for (const double v : ticks) {
+    r.line(kLeft, py(v), kWidth - kRight, py(v), kGrid);
+    r.number(num(v, 4), kLeft - 6, py(v), kInk, true);
+  }
+  r.line(kLeft, kTop, kLeft, kTop + h, kAxis);
+  r.line(kLeft, kTop + h, kWidth - kRight, kTop + h, kAxis);
+  if (std::isfinite(f.bound)) r.line(kLeft, py(f.bound * f.unit_scale), kWidth - kRight, py(f.bound * f.unit_scale), kBound, 2, 6);
+  const auto curve = [&](const Series& s, Colour colour) {
+    for (std::size_t k = 1; k < s.t.size() && k < s.v.size(); ++k)
+      if (std::isfinite(s.v[k - 1]) && std::isfinite(s.v[k]))
+        r.line(px(s.t[k - 1]), py(s.v[k - 1] * f.unit_scale), px(s.t[k]), py(s.v[k] * f.unit_scale), colour, 2);
+  };
+  curve(f.reference, kReference);
+  curve(f.student, kStudent);
+  return r.png();
+}
+
 std::string run_table(const RunFigure& f) {
   if (f.student.t.empty()) return "";
   // The student's extreme where the check reads the run (the sign that breaks the bound).
@@ -211,14 +262,30 @@ std::string run_table(const RunFigure& f) {
 
 namespace {
 
+const char* plotted_name(Plotted p) {
+  switch (p) {
+    case Plotted::kLargest: return "largest";
+    case Plotted::kRunningRms: return "running-rms";
+    case Plotted::kRunningMean: return "running-mean";
+    case Plotted::kFinal: return "final";
+    case Plotted::kSeries: break;
+  }
+  return "series";
+}
+
+// A figure with its numbers in data- attributes: the series as plotted, the bound, how the plot
+// gives the judged statistic (data-plotted) and the two values the verdict used (data-verdict,
+// data-verdict-reference), which the tests read back off the series.
 void figure_block(std::ostream& out, const RunFigure& f) {
   const double final_value = f.student.v.empty() ? NAN : f.student.v.back();
   out << "<figure class=\"run\" data-quantity=\"" << text(f.quantity) << "\" data-unit=\"" << text(f.unit)
       << "\" data-scale=\"" << num(f.unit_scale, 17) << "\" data-bound=\"" << num(f.bound, 17) << "\" data-upper=\""
       << (f.upper ? 1 : 0) << "\" data-from=\"" << num(f.judged_from, 17) << "\" data-final=\"" << num(final_value, 17)
-      << "\"\n  data-student-t=\"" << joined(f.student.t, 7) << "\"\n  data-student-v=\"" << joined(f.student.v, 9)
+      << "\" data-plotted=\"" << plotted_name(f.plotted) << "\" data-draws=\"" << text(f.draws) << "\" data-verdict=\""
+      << exact(f.verdict_yours) << "\" data-verdict-reference=\"" << exact(f.verdict_reference)
+      << "\"\n  data-student-t=\"" << joined(f.student.t, 7) << "\"\n  data-student-v=\"" << joined(f.student.v, 17)
       << "\"\n  data-reference-t=\"" << joined(f.reference.t, 7) << "\"\n  data-reference-v=\""
-      << joined(f.reference.v, 9) << "\">\n"
+      << joined(f.reference.v, 17) << "\">\n"
       << svg_plot(f) << "\n<figcaption>" << text(f.quantity) << ": <span class=\"key student\">your run</span>";
   if (!f.reference.t.empty()) out << ", <span class=\"key reference\">the reference's (the problem set's law)</span>";
   else out << " (the reference's run is drawn for a failed test)";
@@ -230,6 +297,13 @@ void figure_block(std::ostream& out, const RunFigure& f) {
   if (f.judged_from > 0.0) out << "; the shaded start is not judged";
   if (y_range(f).clipped) out << "; your run leaves the plot at the top";
   if (y_range(f).log) out << "; the axis is logarithmic: your run goes far beyond the bound's scale";
+  if (!f.draws.empty() && std::isfinite(f.verdict_yours)) {
+    out << ". Judged, " << text(f.draws) << ": yours " << text(num(f.verdict_yours * f.unit_scale, 4) + " " + f.unit);
+    if (std::isfinite(f.verdict_reference))
+      out << ", the reference's " << text(num(f.verdict_reference * f.unit_scale, 4) + " " + f.unit);
+    out << ".</figcaption>\n</figure>\n";
+    return;
+  }
   out << ". Your final value: " << text(num(final_value * f.unit_scale, 6) + " " + f.unit) << ".</figcaption>\n</figure>\n";
 }
 
@@ -237,16 +311,29 @@ void figure_block(std::ostream& out, const RunFigure& f) {
 void entry_table(std::ostream& out, const EntryTable& e) {
   if (e.what.empty() || e.expected.size() > 100) return;
   const double scale = std::max(1.0, e.expected.cwiseAbs().maxCoeff());
+  const auto wrong = [&](Eigen::Index i, Eigen::Index j) {
+    const double c = e.computed(i, j);
+    return !std::isfinite(c) || std::abs(c - e.expected(i, j)) > e.tol * scale;
+  };
+  if (e.expected.cols() > 1) {  // a matrix: its grid, each entry expected over computed
+    out << "<table class=\"entries grid\"><caption>" << text(e.what) << ": each entry expected, then computed (wrong beyond "
+        << text(num(e.tol * scale, 3)) << ")</caption>\n";
+    for (Eigen::Index i = 0; i < e.expected.rows(); ++i) {
+      out << "<tr>";
+      for (Eigen::Index j = 0; j < e.expected.cols(); ++j)
+        out << "<td" << (wrong(i, j) ? " class=\"wrong\"" : "") << ">" << num(e.expected(i, j), 6) << "<br>"
+            << num(e.computed(i, j), 6) << "</td>";
+      out << "</tr>\n";
+    }
+    out << "</table>\n";
+    return;
+  }
   out << "<table class=\"entries\"><caption>" << text(e.what) << ", entry by entry (wrong beyond "
       << text(num(e.tol * scale, 3)) << ")</caption>\n<tr><th>entry</th><th>expected</th><th>computed</th><th>difference</th></tr>\n";
   for (Eigen::Index i = 0; i < e.expected.rows(); ++i) {
-    for (Eigen::Index j = 0; j < e.expected.cols(); ++j) {
-      const double x = e.expected(i, j), c = e.computed(i, j), d = c - x;
-      const bool wrong = !std::isfinite(c) || std::abs(d) > e.tol * scale;
-      const std::string where = e.expected.cols() == 1 ? std::to_string(i) : std::to_string(i) + ", " + std::to_string(j);
-      out << "<tr" << (wrong ? " class=\"wrong\"" : "") << "><td>(" << where << ")</td><td>" << num(x, 6) << "</td><td>"
-          << num(c, 6) << "</td><td>" << num(d, 3) << "</td></tr>\n";
-    }
+    const double x = e.expected(i, 0), c = e.computed(i, 0);
+    out << "<tr" << (wrong(i, 0) ? " class=\"wrong\"" : "") << "><td>(" << i << ")</td><td>" << num(x, 6) << "</td><td>"
+        << num(c, 6) << "</td><td>" << num(c - x, 3) << "</td></tr>\n";
   }
   out << "</table>\n";
 }
@@ -281,11 +368,11 @@ constexpr const char* kStyle =
     "h2{border-bottom:1px solid #ccc;padding-bottom:.2em}h3{font-size:1em;margin:.2em 0}"
     ".test{border-left:4px solid #2ca02c;padding:.3em .8em;margin:.8em 0}.test.fail{border-color:#d62728}"
     ".status{font-weight:bold}.fail .status{color:#d62728}.pass .status{color:#2ca02c}"
-    "figure{margin:.5em 0}figcaption{font-size:.9em;color:#444}"
+    "table.grid td{text-align:right;padding:.2em .6em;border:1px solid #ddd}figure{margin:.5em 0}figcaption{font-size:.9em;color:#444}"
     ".key.student{color:#d62728}.key.reference{color:#1f77b4}.key.bound{color:#2ca02c}"
     "table.entries{border-collapse:collapse;font-size:.9em;margin:.5em 0}"
     "table.entries td,table.entries th{border:1px solid #ccc;padding:.1em .5em;text-align:right}"
-    "tr.wrong{background:#fdd}code{background:#f4f4f4;padding:.1em .3em}pre.printed{background:#f4f4f4;padding:.5em}";
+    "tr.wrong,td.wrong{background:#fdd}code{background:#f4f4f4;padding:.1em .3em}pre.printed{background:#f4f4f4;padding:.5em}";
 
 }  // namespace
 

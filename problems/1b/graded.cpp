@@ -138,8 +138,11 @@ const char* part_name(Part part) {
 }
 
 // The figure of the tip error of `part` in the student's run `mine`; bound NaN: none drawn.
-RunFigure tip_figure(Part part, const p1b::Result& mine, double bound, const std::string& judged) {
+// `plotted` says how the plot gives the statistic `draws` (its Judgement's) judges.
+RunFigure tip_figure(Part part, const p1b::Result& mine, double bound, const std::string& judged,
+                     Plotted plotted, const std::string& draws) {
   RunFigure f;
+  f.plotted = plotted, f.draws = draws;
   f.quantity = std::string(part_name(part)) + " tip error |x - x_d|";
   f.unit = "mm";
   f.unit_scale = 1e3;
@@ -147,18 +150,53 @@ RunFigure tip_figure(Part part, const p1b::Result& mine, double bound, const std
   f.judged = judged;
   f.judged_from = p1b::kSettleTime;
   return run_figure(f, mine.samples, tip_error, std::string("1b ") + part_name(part) + " tip error",
-                    [part] { return decimate(reference_run(part).samples, tip_error); });
+                    [part]() -> const auto& { return reference_run(part).samples; });
 }
 
 RunFigure q2_figure(Part part, const p1b::Result& mine, double bound) {
   RunFigure f;
+  f.plotted = Plotted::kLargest, f.draws = std::string(part_name(part)) + " max q2 tracking error after 2 s";
   f.quantity = std::string(part_name(part)) + " joint 2 tracking error |q2 - q2_d|";
   f.unit = "rad";
   f.bound = bound;
   f.judged = "its largest value after 2 s";
   f.judged_from = p1b::kSettleTime;
   return run_figure(f, mine.samples, q2_error, std::string("1b ") + part_name(part) + " q2 error",
-                    [part] { return decimate(reference_run(part).samples, q2_error); });
+                    [part]() -> const auto& { return reference_run(part).samples; });
+}
+
+// PART2's tip error RMS over PART3's, in the student's runs or the reference's.
+double drift_ratio(const p1b::Result& part2, const p1b::Result& part3) {
+  return part2.summary.tip_error_rms / std::max(part3.summary.tip_error_rms, 1e-9);
+}
+const std::string kDriftRatio = "PART2's tip error RMS after 2 s over PART3's";
+
+// The ratio drift_ratio() judges, as it grows over the run: PART2's running tip error RMS over
+// PART3's from 2 s on (the tip errors before). Its last point is drift_ratio().
+Series ratio_series(const p1b::Result& part2, const p1b::Result& part3) {
+  RunFigure rms;
+  rms.plotted = Plotted::kRunningRms, rms.judged_from = p1b::kSettleTime;
+  const Series a = plotted_series(part2.samples, tip_error, rms.plotted, rms.judged_from);
+  Series out = plotted_series(part3.samples, tip_error, rms.plotted, rms.judged_from);
+  for (std::size_t k = 0; k < out.v.size(); ++k)
+    out.v[k] = k < a.v.size() ? a.v[k] / std::max(out.v[k], 1e-9) : std::numeric_limits<double>::quiet_NaN();
+  return out;
+}
+
+RunFigure ratio_figure(const p1b::Result& part2, const p1b::Result& part3) {
+  RunFigure f;
+  f.quantity = "PART2's tip error RMS over PART3's";
+  f.bound = p1b::kPart2OverPart3TipErrorRmsMin, f.upper = false;
+  f.judged = "its value at the end of the run (each RMS taken from 2 s on)";
+  f.judged_from = p1b::kSettleTime, f.plotted = Plotted::kFinal, f.draws = kDriftRatio;
+  f.student = decimate(ratio_series(part2, part3), f.judged_from);
+  f.reference_key = "1b PART2 over PART3 tip error RMS";
+  f.make_reference = [from = f.judged_from] {
+    return decimate(ratio_series(reference_run(Part::kPseudoInverseNullspace),
+                                 reference_run(Part::kDynamicallyConsistentNullspace)),
+                    from);
+  };
+  return f;
 }
 
 // The law of `part` as its pin names it: who, the law test, the equation is the law test's.
@@ -188,7 +226,9 @@ double tip_max(const p1b::Result& r) { return r.summary.tip_error_max; }
 double q2_max(const p1b::Result& r) { return r.summary.q2_error_max; }
 
 void part1_holds_the_tip(const Hw2Api& api, Check& check) {
-  check.figure(tip_figure(Part::kTipPd, run(api, Part::kTipPd).result, p1b::kPart1TipErrorRmsMax, "its RMS after 2 s"));
+  check.figure(tip_figure(Part::kTipPd, run(api, Part::kTipPd).result, p1b::kPart1TipErrorRmsMax,
+                          "its RMS after 2 s, drawn from 2 s on as the running RMS", Plotted::kRunningRms,
+                          "PART1 tip error RMS after 2 s"));
   const Run& r = run(api, Part::kTipPd);
   if (!ran_to_the_end(r, check)) return;
   // The tip starts 2.3 mm from x_d. A tip PD with p holds it to the mm scale; without p
@@ -200,7 +240,8 @@ void part1_holds_the_tip(const Hw2Api& api, Check& check) {
 
 void part3_holds_the_tip_while_q2_moves(const Hw2Api& api, Check& check) {
   const Part part3 = Part::kDynamicallyConsistentNullspace;
-  check.figure(tip_figure(part3, run(api, part3).result, p1b::kPart3TipErrorMax, "its largest value after 2 s"));
+  check.figure(tip_figure(part3, run(api, part3).result, p1b::kPart3TipErrorMax, "its largest value after 2 s",
+                          Plotted::kLargest, "PART3 max tip error after 2 s"));
   check.figure(q2_figure(part3, run(api, part3).result, p1b::kPart3Q2ErrorMax));
   const Run& r = run(api, part3);
   if (!ran_to_the_end(r, check)) return;
@@ -217,21 +258,20 @@ void part3_holds_the_tip_while_q2_moves(const Hw2Api& api, Check& check) {
               "Joint 2 should follow q_d[1] = -pi/8 + pi/8 sin(2 pi t / 10)"}});
 }
 
-// PART2's tip error RMS over PART3's, in the student's runs or the reference's.
-double drift_ratio(const p1b::Result& part2, const p1b::Result& part3) {
-  return part2.summary.tip_error_rms / std::max(part3.summary.tip_error_rms, 1e-9);
-}
 
 void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
   // Both runs must apply their parts' laws: a drift staged by another law (PART3's aimed off
   // x_d, say) is not the pseudo-inverse projector's lesson.
   const Part part2 = Part::kPseudoInverseNullspace, part3 = Part::kDynamicallyConsistentNullspace;
   // The ratio has no bound of its own on either series: PART2's drift is drawn without a line.
+  check.figure(ratio_figure(run(api, part2).result, run(api, part3).result));
   check.figure(tip_figure(part2, run(api, part2).result, std::numeric_limits<double>::quiet_NaN(),
-                          "its RMS after 2 s, at least 10 times PART3's"));
+                          "its RMS after 2 s, drawn from 2 s on as the running RMS: at least 10 times PART3's",
+                          Plotted::kRunningRms, ""));
   check.figure(q2_figure(part2, run(api, part2).result, p1b::kPart2Q2ErrorMax));
   check.figure(tip_figure(part3, run(api, part3).result, std::numeric_limits<double>::quiet_NaN(),
-                          "its RMS after 2 s, at most a tenth of PART2's"));
+                          "its RMS after 2 s, drawn from 2 s on as the running RMS: at most a tenth of PART2's",
+                          Plotted::kRunningRms, ""));
   if (!ran_to_the_end(run(api, part2), check) || !ran_to_the_end(run(api, part3), check)) return;
   const p1b::Result& r2 = run(api, part2).result;
   const p1b::Result& r3 = run(api, part3).result;
@@ -244,7 +284,7 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
   // (plus the projected joint task) acting on the tip, tens of newtons at these poses, while
   // PART3 leaves none: the PART2 tip error must be at least ten times PART3's.
   Judgement ratio;
-  ratio.statistic = "PART2's tip error RMS after 2 s over PART3's";
+  ratio.statistic = kDriftRatio;
   ratio.yours = drift_ratio(r2, r3), ratio.bound = p1b::kPart2OverPart3TipErrorRmsMin, ratio.upper = false;
   ratio.reference = reference_statistic("1b tip error RMS of PART2 over PART3's", [] {
     return drift_ratio(reference_run(Part::kPseudoInverseNullspace), reference_run(Part::kDynamicallyConsistentNullspace));
@@ -254,8 +294,8 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
                                 "accelerate the tip"};
   // Each run is judged on its own part's law; the ratio reads both runs.
   if (!run(api, part3).pin.admits(check, whose(part3), law_test(part3), {ratio})) {
-    check.judged_note(q2.judgement.line());
-    check.judged_note(ratio.line());
+    check.show(q2.judgement);
+    check.show(ratio);
     return;
   }
   judge_run(check, run(api, part2).pin, whose(part2), law_test(part2), {q2, drift});

@@ -187,6 +187,13 @@ double limit_excess(const p2::Sample& s) {
   }
   return excess;
 }
+// The largest limit_excess() over the run `r`: what the limits test judges, read from the series
+// its figure plots (the URDF's limits as this file loads them).
+double largest_limit_excess(const p2::Result& r) {
+  double largest = -std::numeric_limits<double>::infinity();
+  for (const p2::Sample& s : r.samples) largest = std::max(largest, limit_excess(s));
+  return largest;
+}
 // max_i |q_i(t) - q_i(t - kPeriod)| (rad) at each sample of `samples` from one period on, 0 before.
 auto period_drift(const std::vector<p2::Sample>& samples) {
   return [&samples](const p2::Sample& s) {
@@ -199,32 +206,45 @@ auto period_drift(const std::vector<p2::Sample>& samples) {
 // The figure of `value` in the student's run `r` and the reference's ("2 " + key).
 template <class Value>
 RunFigure figure_of(RunFigure f, const p2::Result& r, Value value, const std::string& key) {
-  f.judged_from = p2::kSettleTime;
-  return run_figure(f, r.samples, value, "2 " + key, [value] { return decimate(reference_run().samples, value); });
+  return run_figure(f, r.samples, value, "2 " + key, []() -> const auto& { return reference_run().samples; });
 }
+
+// The statistics the behaviour tests judge, as their Judgements and figures name them.
+const std::string kPositionRms = "position error RMS after 1 s";
+const std::string kOrientationRms = "orientation error RMS after 1 s (angle of R R_d^T)";
+const std::string kLimitExcess = "largest excursion past a URDF joint limit";
+const std::string kDrift = "joint drift between t = 5 s and t = 10 s (largest over the joints)";
 
 // The figure of `test` (its first check's quantity) in the student's run.
 void figure(const std::string& test, const Hw2Api& api, Check& check) {
   const p2::Result& r = run(api).result;
   RunFigure f;
+  f.judged_from = p2::kSettleTime;
   if (test == "position") {
     f.quantity = "position error |x_p - x_pd|", f.unit = "mm", f.unit_scale = 1e3;
-    f.bound = p2::kPositionErrorRmsMax, f.judged = "its RMS after 1 s";
+    f.bound = p2::kPositionErrorRmsMax, f.judged = "its RMS after 1 s, drawn from 1 s on as the running RMS";
+    f.plotted = Plotted::kRunningRms, f.draws = kPositionRms;
     check.figure(figure_of(f, r, position_error, "position error"));
   } else if (test == "orientation") {
     f.quantity = "orientation error (angle of R R_d^T)", f.unit = "deg", f.unit_scale = 1.0 / kDeg;
-    f.bound = p2::kOrientationErrorRmsMax, f.judged = "its RMS after 1 s";
+    f.bound = p2::kOrientationErrorRmsMax, f.judged = "its RMS after 1 s, drawn from 1 s on as the running RMS";
+    f.plotted = Plotted::kRunningRms, f.draws = kOrientationRms;
     check.figure(figure_of(f, r, orientation_error_angle, "orientation error"));
   } else if (test == "limits") {
     f.quantity = "largest excursion past a URDF joint limit", f.unit = "deg", f.unit_scale = 1.0 / kDeg;
     f.bound = p2::kJointLimitExcessMax, f.judged = "its largest value over the run";
+    f.judged_from = 0.0, f.plotted = Plotted::kLargest, f.draws = kLimitExcess;
     check.figure(figure_of(f, r, limit_excess, "joint limit excess"));
   } else if (test == "drift") {
     f.quantity = "joint drift over one period, max_i |q_i(t) - q_i(t - 5 s)|", f.unit = "deg", f.unit_scale = 1.0 / kDeg;
     f.bound = p2::kJointDriftPerPeriodMax, f.judged = "its value at the end of the run";
-    f.judged_from = p2::kSettleTime + p2::kPeriod;
+    f.judged_from = p2::kSettleTime + p2::kPeriod, f.plotted = Plotted::kFinal, f.draws = kDrift;
     RunFigure made = run_figure(f, r.samples, period_drift(r.samples), "2 joint drift",
-                                [] { return decimate(reference_run().samples, period_drift(reference_run().samples)); });
+                                []() -> const auto& { return reference_run().samples; });
+    // period_drift indexes the samples it is given: the reference's series reads its own run.
+    made.make_reference = [shape = made] {
+      return decimate(reference_run().samples, period_drift(reference_run().samples), shape);
+    };
     check.figure(std::move(made));
   } else {
     f.quantity = "lambda . lambda_d (lambda flips where it would cross 0)";
@@ -261,7 +281,7 @@ void position_tracking(const Hw2Api& api, Check& check) {
   // second-order error dynamics). With it, only the uncompensated Coriolis forces remain
   // (tenths of a mm on the reference). 1 mm RMS separates the two.
   judge(api, check,
-        {{judgement("position error RMS after 1 s", r, [](const p2::Result& x) { return x.summary.position_error_rms; },
+        {{judgement(kPositionRms, r, [](const p2::Result& x) { return x.summary.position_error_rms; },
                     p2::kPositionErrorRmsMax, 1e3, "mm"),
           "link7's origin should follow x_d = (0, 0.5 + 0.1 cos(2 pi t/5), 0.65 - 0.05 cos(4 pi t/5))"}});
 }
@@ -274,7 +294,7 @@ void orientation_tracking(const Hw2Api& api, Check& check) {
   // 2.5 / |kpx - w^2 + j kvx w| = 0.045 rad (0.032 rad RMS); with it the error is set by the
   // uncompensated Coriolis forces (about a milliradian). 0.01 rad (0.57 deg) RMS separates them.
   judge(api, check,
-        {{judgement("orientation error RMS after 1 s (angle of R R_d^T)", r,
+        {{judgement(kOrientationRms, r,
                     [](const p2::Result& x) { return x.summary.orientation_error_rms; }, p2::kOrientationErrorRmsMax,
                     1.0 / kDeg, "deg"),
           "link7 should turn with lambda_d(t)"}});
@@ -306,8 +326,8 @@ void joints_stay_near_their_limits(const Hw2Api& api, Check& check) {
   // joint 1 reaches 171.9 deg at the far end of the y sweep, 1.9 deg past its 170 deg limit.
   // 5 deg allows that and flags an arm that swings away from the task's joint path.
   judge(api, check,
-        {{judgement("largest excursion past a URDF joint limit", r,
-                    [](const p2::Result& x) { return -x.summary.joint_limit_margin; }, p2::kJointLimitExcessMax,
+        {{judgement(kLimitExcess, r,
+                    &largest_limit_excess, p2::kJointLimitExcessMax,
                     1.0 / kDeg, "deg"),
           "the joints should stay within their URDF limits (yours: joint " +
               std::to_string(r.summary.joint_limit_joint + 1) + " comes nearest)"}});
@@ -323,7 +343,7 @@ void self_motion_is_damped(const Hw2Api& api, Check& check) {
   // reference). Undamped, the self-motion keeps what the Coriolis coupling pumps into it and
   // wanders by tens of degrees per period. 0.1 rad (5.7 deg) separates the two.
   judge(api, check,
-        {{judgement("joint drift between t = 5 s and t = 10 s (largest over the joints)", r,
+        {{judgement(kDrift, r,
                     [](const p2::Result& x) { return x.summary.joint_drift_per_period; }, p2::kJointDriftPerPeriodMax,
                     1.0 / kDeg, "deg"),
           "the arm should repeat its motion every 5 s period (joint " +

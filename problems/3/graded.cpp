@@ -139,14 +139,16 @@ const auto tilt = &p3::tilt_angle;
 
 // The figure of `quantity` (`value`, shown in `unit` = SI times `scale`) in the student's run and
 // the reference's, with the check's `bound` on what it reads of it (`judged`).
+// `plotted` says how the plot gives the statistic `draws` (its Judgement's) judges.
 template <class Value>
 void figure(const Hw2Api& api, Check& check, Value value, const std::string& quantity, const std::string& unit,
-            double scale, double bound, const std::string& judged) {
+            double scale, double bound, const std::string& judged, Plotted plotted = Plotted::kSeries,
+            const std::string& draws = "") {
   RunFigure f;
   f.quantity = quantity, f.unit = unit, f.unit_scale = scale, f.bound = bound, f.judged = judged;
-  f.judged_from = p3::kSettleTime;
+  f.judged_from = p3::kSettleTime, f.plotted = plotted, f.draws = draws;
   check.figure(run_figure(f, run(api).result.samples, value, "3 " + quantity,
-                          [value] { return decimate(reference_run().samples, value); }));
+                          []() -> const auto& { return reference_run().samples; }));
 }
 
 // The statistic `statistic` of a run (`of` reads it from the run's Summary) in the student's run
@@ -170,7 +172,8 @@ void judge(const Hw2Api& api, Check& check, const std::vector<Judged>& judged, b
 }
 
 void contact_force(const Hw2Api& api, Check& check) {
-  figure(api, check, force_error, "force error |F_x - 10 N|", "N", 1.0, p3::kForceErrorMeanMax, "its mean after 1 s");
+  figure(api, check, force_error, "force error |F_x - 10 N|", "N", 1.0, p3::kForceErrorMeanMax,
+         "its mean after 1 s, drawn from 1 s on as the running mean", Plotted::kRunningMean, "mean |F_x - 10 N| after 1 s");
   // In contact the plane removes x, and the law's force is Omega-bar F_d + p: the tool pushes
   // F_x = 10 N less the uncompensated Coriolis and centrifugal force along x (the reference's
   // mean F_x is 9.98 N). Bullet's solver shares the push among the disc's 3-4 contact points
@@ -185,7 +188,8 @@ void contact_force(const Hw2Api& api, Check& check) {
 }
 
 void tool_flat(const Hw2Api& api, Check& check) {
-  figure(api, check, tilt, "tilt of the tool against the plane", "deg", 1.0 / kDeg, p3::kTiltMax, "its largest value after 1 s");
+  figure(api, check, tilt, "tilt of the tool against the plane", "deg", 1.0 / kDeg, p3::kTiltMax,
+         "its largest value after 1 s", Plotted::kLargest, "largest tilt of the tool against the plane after 1 s");
   // Pressed on a rigid plane with zero moment commanded about y and z, the disc can tilt only
   // as far as the solver lets its rim sink in: 0.002 deg on the reference. 0.5 deg would lift
   // the opposite rim of the 0.08 m disc 0.35 mm off the plane: not flat any more.
@@ -197,7 +201,9 @@ void tool_flat(const Hw2Api& api, Check& check) {
 }
 
 void yz_tracking(const Hw2Api& api, Check& check) {
-  figure(api, check, yz_error, "|(y - y_d, z - z_d)|", "mm", 1e3, p3::kYzErrorRmsMax, "its RMS after 1 s");
+  figure(api, check, yz_error, "|(y - y_d, z - z_d)|", "mm", 1e3, p3::kYzErrorRmsMax,
+         "its RMS after 1 s, drawn from 1 s on as the running RMS", Plotted::kRunningRms,
+         "RMS |(y - y_d, z - z_d)| after 1 s");
   // As in problem 2 (problems/2/graded.cpp): without the feed-forward acceleration the PD lags
   // y_d and z_d by 3.9 mm RMS (closed form); with it only the uncompensated Coriolis forces
   // remain (0.27 mm RMS on the reference). 1 mm separates the two.
@@ -209,7 +215,9 @@ void yz_tracking(const Hw2Api& api, Check& check) {
 }
 
 void rotation_tracking(const Hw2Api& api, Check& check) {
-  figure(api, check, rotation_x_error, "rotation-about-x error", "deg", 1.0 / kDeg, p3::kRotationXErrorRmsMax, "its RMS after 1 s");
+  figure(api, check, rotation_x_error, "rotation-about-x error", "deg", 1.0 / kDeg, p3::kRotationXErrorRmsMax,
+         "its RMS after 1 s, drawn from 1 s on as the running RMS", Plotted::kRunningRms,
+         "RMS rotation-about-x error after 1 s");
   // lambda_d turns link7 about x by 2a = (pi/2) cos(2 pi t/5). As in problem 2, without
   // feed-forward the PD lags it by 0.032 rad RMS; the reference's error is 0.3 mrad RMS (the
   // uncompensated Coriolis forces). 0.01 rad (0.57 deg) separates the two.

@@ -60,15 +60,17 @@ status=${status%%\"*}
 echo "ok   '$key $test_name' FAILed"
 
 if [ "$quantity" = entries ]; then
-  table=${section#*<table class=\"entries\">}
+  table=${section#*<table class=\"entries}
   [ "$table" != "$section" ] || fail "the test's section has no table of entries"
   table=${table%%</table>*}
-  rows=$(grep -o '<tr' <<< "$table" | wc -l)
-  wrong=$(grep -o '<tr class="wrong"' <<< "$table" | wc -l)
+  entries=$(grep -oE '<td[ >]' <<< "$table" | wc -l)
+  [[ $table == " grid"* ]] || entries=$(($(grep -o '<tr' <<< "$table" | wc -l) - 1))
+  # A vector's table marks its wrong rows, a matrix's grid its wrong cells.
+  wrong=$(grep -oE '<t[rd] class="wrong"' <<< "$table" | wc -l)
   if [ "$wrong" -lt "$shows" ] || [ "$wrong" -gt "$most" ]; then
-    fail "expected $shows to $most wrong entries in the table, it marks $wrong of $((rows - 1))"
+    fail "expected $shows to $most wrong entries in the table, it marks $wrong of $entries"
   fi
-  echo "ok   its table marks $wrong of $((rows - 1)) entries wrong"
+  echo "ok   its table marks $wrong of $entries entries wrong"
   exit 0
 fi
 
@@ -108,5 +110,30 @@ case $shows in
       fail "expected every student point of '$quantity' after $from s past the bound $bound and every reference point below the student's lowest: student's lowest $student_min, reference's highest $reference_max"
     echo "ok   the figure: after $from s the student's '$quantity' stays at or above $student_min, past the bound $bound; the reference's stays at or below $reference_max"
     ;;
-  *) fail "SHOWS is max or apart, not '$shows'" ;;
+  judged)
+    # Issue 46: the statistic the verdict used (data-verdict, the reference's data-verdict-
+    # reference) is the one read off the plotted series (data-plotted: the largest value from
+    # data-from on, else the last point, a running RMS or mean), to 1e-9, for both runs; the
+    # student's is past the bound, the reference's within it.
+    plotted=$(attribute plotted)
+    read_off() {
+      awk -v from="$from" -v how="$plotted" -v times="$1" -v values="$2" 'BEGIN {
+        n = split(times, t, " "); split(values, v, " "); m = ""
+        for (k = 1; k <= n; ++k) if (how != "largest" || t[k] + 0 >= from + 0) {
+          if (how != "largest" || m == "" || v[k] + 0 > m + 0) m = v[k] }
+        print m }'
+    }
+    same() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; s = (b < 0 ? -b : b); if (s < 1) s = 1; exit !(d <= 1e-9 * s) }'; }
+    verdict=$(attribute verdict)
+    verdict_reference=$(attribute verdict-reference)
+    mine=$(read_off "$(attribute student-t)" "$(attribute student-v)")
+    theirs=$(read_off "$(attribute reference-t)" "$(attribute reference-v)")
+    same "$mine" "$verdict" || fail "the plot of '$quantity' reads $mine ($plotted), the verdict used $verdict"
+    same "$theirs" "$verdict_reference" ||
+      fail "the reference's plot of '$quantity' reads $theirs ($plotted), the verdict used $verdict_reference"
+    awk -v s="$verdict" -v r="$verdict_reference" -v b="$bound" 'BEGIN { exit !(s + 0 > b + 0 && r + 0 <= b + 0) }' ||
+      fail "expected the student's judged '$quantity' past the bound $bound and the reference's within it: $verdict, $verdict_reference"
+    echo "ok   the figure: the judged '$quantity' read off the plot ($plotted) is the verdict's, $verdict past the bound $bound; the reference's $verdict_reference within it"
+    ;;
+  *) fail "SHOWS is max, apart or judged, not '$shows'" ;;
 esac

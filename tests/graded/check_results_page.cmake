@@ -1,13 +1,15 @@
 cmake_minimum_required(VERSION 3.22)
-# What Gradescope shows of a grading with failed simulated tests (issue 41): results.json is
-# valid JSON, under Gradescope's 1 MB, every text (output, names, tags) without a raw < or >
-# (output_format text, issue 38), and, with CASE, that test is tagged TAG (the mistake the
-# catalogue names) and its output holds its run as a text table beside the reference's.
+# What Gradescope shows of a grading with failed simulated tests (issues 41, 46): results.json is
+# valid JSON, under Gradescope's 1 MB, every test's output "html" whose only tags are the
+# grader's own (tests/support/gradescope_html.cmake), every other text (names, tags, the
+# top-level output, "text") without a raw < or >, each failed simulated test with a PNG of its
+# run, and, with CASE, that test is tagged TAG (the mistake the catalogue names).
 #   cmake -DJSON=results.json [-DTEST="1b iv. ..." -DTAG="mistake: ..."] -P check_results_page.cmake
 file(SIZE "${JSON}" size)
 if(size GREATER_EQUAL 1048576)
   message(FATAL_ERROR "results.json is ${size} bytes: Gradescope reads at most 1 MB")
 endif()
+include(${CMAKE_CURRENT_LIST_DIR}/../support/gradescope_html.cmake)
 file(READ "${JSON}" json)
 string(JSON count ERROR_VARIABLE bad LENGTH "${json}" tests)
 if(bad)
@@ -21,15 +23,25 @@ foreach(i RANGE ${last})
   string(JSON name GET "${json}" tests ${i} name)
   string(JSON text GET "${json}" tests ${i} output)
   string(JSON tags GET "${json}" tests ${i} tags)
-  string(APPEND texts "${name}${text}${tags}")
+  string(JSON format GET "${json}" tests ${i} output_format)
+  string(JSON status GET "${json}" tests ${i} status)
+  if(NOT format STREQUAL "html")
+    message(FATAL_ERROR "test '${name}' has output_format '${format}', not html")
+  endif()
+  if(status STREQUAL "failed" AND text MATCHES "replay it on your machine: bash scripts/run"
+     AND NOT text MATCHES "<img alt=\"[^\"]*\" src=\"data:image/png;base64,")
+    message(FATAL_ERROR "the failed simulated test '${name}' shows no picture of its run:\n${text}")
+  endif()
+  opspace_grader_markup_removed("${text}" rest)
+  string(APPEND texts "${name}${rest}${tags}")
   if(CASE AND name STREQUAL CASE)
     set(found TRUE)
     string(JSON first ERROR_VARIABLE no_tag GET "${json}" tests ${i} tags 0)
     if(no_tag OR NOT first STREQUAL TAG)
       message(FATAL_ERROR "test '${CASE}' is tagged '${tags}', not '${TAG}'")
     endif()
-    if(NOT text MATCHES "your run beside the reference's: [^\n]*\n  t \\(s\\) +yours +reference\n")
-      message(FATAL_ERROR "test '${CASE}' shows no table of its run beside the reference's:\n${text}")
+    if(NOT text MATCHES "your run in red, the reference's in blue")
+      message(FATAL_ERROR "test '${CASE}' shows no picture of its run beside the reference's:\n${text}")
     endif()
   endif()
 endforeach()
@@ -39,4 +51,4 @@ endif()
 if(texts MATCHES "[<>]")
   message(FATAL_ERROR "a text of results.json holds a raw < or >: Gradescope must never render a student's tag")
 endif()
-message("ok   results.json: ${size} bytes, ${count} tests, valid, every text escaped")
+message("ok   results.json: ${size} bytes, ${count} tests, valid, every text escaped, each failed run pictured")

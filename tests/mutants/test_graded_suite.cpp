@@ -5,8 +5,13 @@
 #include <doctest/doctest.h>
 
 #include <nlohmann/json.hpp>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "grader.hpp"
@@ -15,6 +20,7 @@
 #include "oracles.hpp"
 #include "report.hpp"
 #include "suite.hpp"
+#include "tests/support/gradescope_html.hpp"
 
 namespace grading = opspace::grading;
 
@@ -36,6 +42,23 @@ std::string join(const std::set<std::string>& names) {
   return out.empty() ? " (none)" : out;
 }
 
+// Each figure that draws a judged statistic gives back, read off its plotted series, the value the
+// verdict used (issue 46: the picture and the verdict cannot disagree). Seen to fail with the
+// figures decimated as before (the peak of each stretch: a force's mean read 2.26 N, not 0.41 N).
+void check_figures_draw_their_verdicts(const grading::TestResult& r) {
+  for (const grading::RunFigure& f : r.figures) {
+    if (f.draws.empty() || std::isnan(f.verdict_yours)) continue;  // nothing judged: the run stopped early
+    const double plotted = grading::plotted_statistic(f, f.student);
+    INFO(r.test->name << ": the figure of " << f.quantity << " draws '" << f.draws << "'");
+    CHECK(std::abs(plotted - f.verdict_yours) <= 1e-9 * std::max(1.0, std::abs(f.verdict_yours)));
+  }
+  if (r.judged.empty()) return;
+  for (const grading::RunFigure& f : r.figures) {
+    INFO(r.test->name << ": the figure of " << f.quantity << " names '" << f.draws << "', which nothing judged");
+    CHECK((f.draws.empty() || !std::isnan(f.verdict_yours)));
+  }
+}
+
 // Every "likely mistake" line the grader prints for `api`, problem by problem; `json`, if given,
 // gets the results.json of the grading, and `failed` the names of the tests that lost points.
 std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* json = nullptr,
@@ -49,6 +72,7 @@ std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* js
     result.problem = &problem;
     result.results = grading::run_tests(problem.tests, api, nullptr, 0.0, &catalogue);
     for (const grading::TestResult& r : result.results) {
+      check_figures_draw_their_verdicts(r);
       result.score += r.score;
       result.max_score += r.test->points;
       if (failed && r.score < r.test->points) failed->insert(r.test->name);
@@ -63,6 +87,60 @@ std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* js
     *json = out.str();
   }
   return named;
+}
+
+// The rubric's short name of each test of `problem`: its label ("c" of "c. the controller ..."),
+// numbered in the report's order where several tests share it ("d1" ... "d5").
+std::map<std::string, std::string> short_names(const grading::Problem& problem) {
+  std::map<std::string, int> count;
+  const auto label = [](const std::string& name) { return name.substr(0, name.find('.')); };
+  for (const grading::GradedTest& t : problem.tests) ++count[label(t.name)];
+  std::map<std::string, int> seen;
+  std::map<std::string, std::string> out;
+  for (const grading::GradedTest& t : problem.tests) {
+    const std::string l = label(t.name);
+    out[t.name] = count[l] > 1 ? l + std::to_string(++seen[l]) : l;
+  }
+  return out;
+}
+
+// A row of docs/grader.md's rubric without its last column (why): "| key | mistake | tests (lost of
+// total) |", for `mistake` of `problem` that lost the tests `failed`.
+std::string rubric_row(const grading::Problem& problem, const grading::Mistake& mistake, const std::set<std::string>& failed) {
+  const std::map<std::string, std::string> names = short_names(problem);
+  std::string tests;
+  double lost = 0.0, total = 0.0;
+  for (const grading::GradedTest& t : problem.tests) {
+    total += t.points;
+    if (failed.count(t.name) == 0) continue;
+    tests += (tests.empty() ? "" : ", ") + names.at(t.name);
+    lost += t.points;
+  }
+  std::string what;
+  for (const char c : mistake.what) what += c == '|' ? std::string("\\|") : std::string(1, c);
+  return "| " + problem.key + " | " + what + " | " + tests + " (" + grading::format_points(lost) + " of " +
+         grading::format_points(total) + ") |";
+}
+
+// The rubric's rows in docs/grader.md, between its markers, each without its last column.
+std::set<std::string> documented_rubric() {
+  std::ifstream in(OPSPACE_GRADER_DOC);
+  std::set<std::string> rows;
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("<!-- rubric", 0) == 0) inside = line.find("end") == std::string::npos;
+    if (!inside || line.rfind("| ", 0) != 0 || line.rfind("| problem", 0) == 0) continue;
+    const std::size_t why = line.rfind(" | ", line.size() - 3);  // the last column's separator
+    rows.insert(line.substr(0, why + 2));
+  }
+  return rows;
+}
+
+const grading::Problem& problem_of(const std::vector<grading::Problem>& suite, const grading::Mistake& mistake) {
+  for (const grading::Problem& problem : suite)
+    for (const grading::GradedTest& test : problem.tests)
+      if (test.name == mistake.caught_by.front()) return problem;
+  throw std::runtime_error("no problem has the test " + mistake.caught_by.front());
 }
 
 }  // namespace
@@ -88,8 +166,12 @@ TEST_CASE("the grader's own reference (its oracles) earns full marks on every gr
 
 // One grading per mistake answers both questions (the tests it loses, the line that names it):
 // the grading with the catalogue scores as the one without does, and it took two of them.
+// The same grading also holds docs/grader.md's rubric to what it measured: each mistake's row names
+// the tests it lost and the points (issue 46).
 TEST_CASE("each known mistake loses exactly the tests aimed at it and, made alone, is named in the report") {
   std::uint64_t identity = 100;
+  const std::vector<grading::Problem> suite = grading::graded_suite();
+  const std::set<std::string> rubric = documented_rubric();
   for (const grading::Mistake& mistake : grading::all_mistakes()) {
     grading::Hw2Api api = grading::linked_api();
     mistake.apply(api);
@@ -103,16 +185,37 @@ TEST_CASE("each known mistake loses exactly the tests aimed at it and, made alon
                      << "\n  tests that failed:" << join(failed) << "\n  named:" << join(named));
     CHECK(failed == expected_failed);
     CHECK(named == std::set<std::string>{expected});
+    const std::string row = rubric_row(problem_of(suite, mistake), mistake, failed);
+    INFO("its row in docs/grader.md's rubric, up to the last column (why): " << row);
+    CHECK(rubric.count(row) == 1);
     // Its results.json (issue 41): valid, under Gradescope's 1 MB, no raw < or > in a text, and
     // every test it is named for tagged with it. Seen to fail with the tags left out.
     CHECK(json.size() < 1048576);
     const nlohmann::json results = nlohmann::json::parse(json);  // throws on invalid JSON
     int tagged = 0;
     for (const nlohmann::json& test : results.at("tests")) {
-      CHECK(test.at("output").get<std::string>().find_first_of("<>") == std::string::npos);
+      const std::string rest = opspace::testing::grader_markup_removed(test.at("output").get<std::string>());
+      CHECK(rest.find_first_of("<>") == std::string::npos);
       for (const nlohmann::json& tag : test.at("tags")) tagged += tag == "mistake: " + mistake.what ? 1 : 0;
     }
     CHECK(tagged > 0);
+  }
+}
+
+TEST_CASE("docs/grader.md's rubric has a row for each known mistake and no other") {
+  const std::vector<grading::Problem> suite = grading::graded_suite();
+  std::set<std::string> whats;
+  for (const grading::Mistake& mistake : grading::all_mistakes()) {
+    std::string what;
+    for (const char c : mistake.what) what += c == '|' ? std::string("\\|") : std::string(1, c);
+    whats.insert("| " + problem_of(suite, mistake).key + " | " + what + " | ");
+  }
+  const std::set<std::string> rows = documented_rubric();
+  CHECK(rows.size() == whats.size());
+  for (const std::string& row : rows) {
+    const bool known = std::any_of(whats.begin(), whats.end(), [&row](const std::string& w) { return row.rfind(w, 0) == 0; });
+    INFO("a rubric row that is no known mistake: " << row);
+    CHECK(known);
   }
 }
 

@@ -27,7 +27,7 @@ try {
     name: s.dataset.test,
     failed: s.dataset.status !== 'PASS',
     simulated: s.dataset.simulated === '1',
-    wrong: [...s.querySelectorAll('table.entries tr.wrong')].map((r) => getComputedStyle(r).backgroundColor),
+    wrong: [...s.querySelectorAll('table.entries .wrong')].map((r) => getComputedStyle(r).backgroundColor),
     figures: [...s.querySelectorAll('figure.run')].map((f) => ({
       student: f.querySelectorAll('svg polyline.student').length,
       reference: f.querySelectorAll('svg polyline.reference').length,
