@@ -135,11 +135,6 @@ Json tags(const TestResult& r) {
   return out;
 }
 
-// The grader's own failures begin so (runner_process.cpp, runner_build.cpp, grader.cpp): a
-// program it could not start, a pipe it could not create, a runner it could not build. A text
-// from the student's side never begins a finding or a failure (it is quoted inside one).
-bool grader_failed(const std::string& text) { return text.rfind("the grader could not ", 0) == 0; }
-
 // What the student reads of a hidden test's problem: when the hidden tests appear.
 std::string shown_when(const std::string& hidden_as) {
   return hidden_as == "after_due_date" ? "after the due date" : "when your instructor publishes the grades";
@@ -147,22 +142,17 @@ std::string shown_when(const std::string& hidden_as) {
 
 }  // namespace
 
+// Counted from the faults typed where they happened (fault.hpp), never from a text: a failure
+// the submission caused may read like the grader's, and only the grader's buy a second grading.
 int grader_faults(const std::vector<ProblemResult>& problems) {
   int faults = 0;
   for (const ProblemResult& p : problems) {
-    if (grader_failed(p.failure)) {
-      ++faults;
+    if (p.grader_fault) {
+      ++faults;  // the problem, once: its tests were never run
       continue;
     }
-    for (const TestResult& r : p.results) {
-      if (!r.interrupted) continue;
-      for (const std::string& f : r.findings) {
-        if (grader_failed(f)) {
-          ++faults;
-          break;
-        }
-      }
-    }
+    const auto grader_fault = [](const TestResult& r) { return r.grader_fault; };
+    faults += static_cast<int>(std::count_if(p.results.begin(), p.results.end(), grader_fault));
   }
   return faults;
 }

@@ -64,6 +64,7 @@ ToolResult run_tool(const std::vector<std::string>& argv, const std::string& wor
     const ssize_t n = read(out[0], buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
+    result.total += static_cast<std::size_t>(n);
     const std::size_t room = max_output - result.output.size();
     result.cut = result.cut || static_cast<std::size_t>(n) > room;
     result.output.append(buffer, std::min<std::size_t>(static_cast<std::size_t>(n), room));

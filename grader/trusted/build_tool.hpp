@@ -17,6 +17,7 @@ struct ToolResult {
   int status = 0;      ///< its wait status
   std::string output;  ///< stdout and stderr, at most the limit given to run_tool
   bool cut = false;    ///< the output was longer than that
+  std::size_t total = 0;  ///< how many bytes it wrote in all (read to its end, or to the deadline)
 };
 
 /// Runs `argv` in the sandbox as `settings` says, within settings.timeout, keeping at most

@@ -101,6 +101,7 @@ std::vector<BuiltRunner> build_all(const std::vector<const Problem*>& problems, 
         built[i] = build_runner(toolchain, problems[i]->key, options.exercises + "/" + file, "exercises/" + file, settings);
       } catch (const std::exception& e) {
         built[i].error = std::string("the grader could not build the runner: ") + e.what();
+        built[i].fault = Fault::grader;
       }
     }
   };
@@ -117,12 +118,14 @@ ProblemResult not_built(const Problem& problem, const BuiltRunner& built) {
   ProblemResult out;
   out.problem = &problem;
   out.failure = built.error;
+  out.grader_fault = built.fault == Fault::grader;
   out.warnings = built.warnings;
   for (const GradedTest& t : problem.tests) {
     TestResult r;
     r.test = &t;
     r.findings = {"not graded: " + built.error.substr(0, built.error.find('\n'))};
     r.interrupted = true;
+    r.grader_fault = out.grader_fault;
     out.results.push_back(r);
     out.max_score += t.points;
   }
@@ -188,6 +191,10 @@ ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, co
   const std::vector<Mistake> catalogue = mistakes(problem.key);
   out.results = run_tests(problem.tests, api, &runner, timeout_of(options, problem.key), &catalogue);
   runner.stop();
+  // Whose fault each failure was: the runner knows (run_tests keeps only the failure's text).
+  const std::vector<Fault>& faults = runner.test_faults();
+  for (std::size_t i = 0; i < out.results.size() && i < faults.size(); ++i)
+    out.results[i].grader_fault = faults[i] == Fault::grader;
   for (const TestResult& r : out.results) {
     out.score += r.score;
     out.max_score += r.test->points;
@@ -309,6 +316,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
       BuiltRunner broken = built[i];
       broken.ok = false;
       broken.error = std::string("the grader could not run this problem: ") + e.what();
+      broken.fault = Fault::grader;
       results.push_back(not_built(*chosen[i], broken));
     }
   }

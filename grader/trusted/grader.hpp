@@ -64,6 +64,7 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
 
 /// The tests and problems lost to the grader's own failures (a program it could not start, a
 /// runner it could not build), never to the student's code: scripts/regrade grades those again.
+/// Counted from ProblemResult::grader_fault and TestResult::grader_fault, never from a text.
 int grader_faults(const std::vector<ProblemResult>& problems);
 
 /// JUnit XML: one <testsuite> per problem, one <testcase> per test, <failure> with the findings.

@@ -151,6 +151,8 @@ struct TestResult {
   /// The student's code crashed, timed out, exited or sent garbage during this test: the
   /// findings say what happened, and no formula hint applies.
   bool interrupted = false;
+  /// The grader's own call failed during this test (fault.hpp): not the student's doing.
+  bool grader_fault = false;
   /// A known mistake was named for this test: the likely-mistake line replaces the hint.
   bool diagnosed = false;
   std::string printed;  ///< what the student's code printed during the test (sanitized, cut)

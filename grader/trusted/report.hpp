@@ -18,6 +18,7 @@ struct ProblemResult {
   double score = 0.0;                ///< sum of the results' scores
   double max_score = 0.0;            ///< sum of the tests' points
   std::string failure;   ///< empty, or why the problem could not be graded (its file does not compile)
+  bool grader_fault = false;  ///< `failure` is the grader's own (fault.hpp), not the submission's
   std::string warnings;  ///< the compiler's warnings on the problem's file (shown, never fatal)
   std::vector<std::string> notes;  ///< other things the student should know (oracle calls)
 };

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -30,7 +32,24 @@ namespace {
 constexpr std::size_t kMaxSource = 1u << 20;     // an exercise file is a few kilobytes
 constexpr std::size_t kMaxToolOutput = 1u << 16;  // what is kept of the compiler's output
 constexpr std::size_t kMaxWarnings = 1500;        // what the report shows of the warnings
-constexpr std::size_t kMaxSymbolList = 64u << 20;  // nm of a runner: 5-15 kB (--gc-sections)
+
+// Records why the build stops and who caused it (fault.hpp). Returns false, the stage's result.
+bool stop(BuiltRunner& built, Fault fault, std::string error) {
+  built.fault = fault;
+  built.error = std::move(error);
+  return false;
+}
+
+// "64 MiB", "64.1 MiB", "12 KiB", "900 bytes": a size for the student, rounded up, so that a
+// size over a bound never reads as the bound.
+std::string size_text(std::size_t bytes) {
+  const bool mib = bytes >= (1u << 20), kib = bytes >= (1u << 10);
+  if (!mib && !kib) return std::to_string(bytes) + " bytes";
+  const double tenths = std::ceil(static_cast<double>(bytes) / (mib ? 1u << 20 : 1u << 10) * 10.0);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f %s", std::fmod(tenths, 10.0) == 0.0 ? 0 : 1, tenths / 10.0, mib ? "MiB" : "KiB");
+  return text;
+}
 
 void make_owned(const std::string& path, const Account& account) {
   if (account.uid == 0 || geteuid() != 0) return;
@@ -152,14 +171,14 @@ bool load_report(const std::string& path, BuiltRunner& built) {
 }
 
 // The library answers of problem `key` among the symbols nm lists of `file` (`which`:
-// --defined-only, --undefined-only), added to built.answers. False if nm failed, or if its list
-// was longer than kMaxSymbolList: it is kept whole or not at all, since a cut one could hide one.
+// --defined-only, --undefined-only), added to built.answers. False, with built.error, if the
+// list could not be read whole (list_symbols).
 bool add_answers(const Toolchain& toolchain, const std::string& key, const std::string& which, const std::string& file,
-                 const std::string& work, const BuildSettings& settings, BuiltRunner& built) {
-  const std::string folder = fs::path(file).parent_path().string();
-  const ToolResult nm = run_tool({toolchain.nm, "-C", "-P", which, file}, work, {folder}, settings, kMaxSymbolList);
-  if (nm.timed_out || !WIFEXITED(nm.status) || WEXITSTATUS(nm.status) != 0 || nm.cut) return false;
-  for (const std::string& answer : answers_among(key, symbol_names(nm.output)))
+                 const std::string& work, const BuildSettings& settings, const std::string& shown_as,
+                 const std::string& what, BuiltRunner& built) {
+  const SymbolList list = list_symbols(toolchain.nm, which, file, work, settings, shown_as, what);
+  if (list.fault != Fault::none) return stop(built, list.fault, list.error);
+  for (const std::string& answer : answers_among(key, list.names))
     if (std::find(built.answers.begin(), built.answers.end(), answer) == built.answers.end()) built.answers.push_back(answer);
   return true;
 }
@@ -220,26 +239,30 @@ bool compile_stage(const Toolchain& toolchain, const Stages& s, const std::strin
   const ToolResult cc = run_tool(compile, s.compiled, {s.source, s.headers_dir}, settings, kMaxToolOutput);
   built.warnings = warnings_of(cc.output, s.source_file, shown_as, kMaxWarnings);
   if (cc.timed_out) {
-    built.error = "compiling " + shown_as + " took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s";
-    return false;
+    return stop(built, Fault::submission,
+                "compiling " + shown_as + " took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s");
   }
   if (!WIFEXITED(cc.status) || WEXITSTATUS(cc.status) != 0) {
-    built.error = first_error(cc.output, s.source_file, shown_as, s.roots, "compiler");
-    if (built.error.empty()) built.error = "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")";
-    return false;
+    const std::string error = first_error(cc.output, s.source_file, shown_as, s.roots, "compiler");
+    return stop(built, Fault::submission,
+                error.empty() ? "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")" : error);
   }
-  built.error = written_file(s.compiled + "/exercise.d")
-                    ? check_includes(s.compiled + "/exercise.d", s.source, shown_as, s.roots)
-                    : "the compiler left no list of what " + shown_as + " included";
-  if (!built.error.empty()) return false;
+  const std::string refused = written_file(s.compiled + "/exercise.d")
+                                  ? check_includes(s.compiled + "/exercise.d", s.source, shown_as, s.roots)
+                                  : "the compiler left no list of what " + shown_as + " included";
+  if (!refused.empty()) return stop(built, Fault::submission, refused);
+  if (!written_file(s.compiled + "/exercise.o"))
+    return stop(built, Fault::submission, "the compiler left no object file for " + shown_as);
+  std::string refusal;
   try {
     copy_read_only(s.compiled + "/exercise.o", s.object);
-    const std::string refusal = object_refusal(s.object);
-    if (!refusal.empty()) built.error = shown_as + " compiled to an object the grader does not link: " + refusal;
-  } catch (const std::exception&) {
-    built.error = "the compiler left no object file for " + shown_as;
+    refusal = object_refusal(s.object);
+  } catch (const std::exception& e) {
+    return stop(built, Fault::grader, "the grader could not read the object of " + shown_as + ": " + e.what());
   }
-  return built.error.empty();
+  if (!refusal.empty())
+    return stop(built, Fault::submission, shown_as + " compiled to an object the grader does not link: " + refusal);
+  return true;
 }
 
 // Links the grader's copy of the object with this problem's inputs (its runner loop and the
@@ -256,17 +279,15 @@ bool link_stage(const Toolchain& toolchain, const std::vector<std::string>& inpu
   link.insert(link.end(), {"-o", s.linked + "/runner"});
   const ToolResult ld = run_tool(link, s.linked, {s.objects, s.archives_dir}, settings, kMaxToolOutput);
   if (ld.timed_out || !WIFEXITED(ld.status) || WEXITSTATUS(ld.status) != 0) {
-    built.error = first_error(ld.output, s.object, shown_as, s.roots, "linker");
-    if (built.error.empty()) built.error = "linking the runner of " + shown_as + " failed";
-    built.error = "linking failed: " + built.error;
-    return false;
+    const std::string error = first_error(ld.output, s.object, shown_as, s.roots, "linker");
+    return stop(built, Fault::submission,
+                "linking failed: " + (error.empty() ? "linking the runner of " + shown_as + " failed" : error));
   }
   try {
     copy_read_only(s.linked + "/runner", s.runner);
     built.runtime = runtime_files(s.runner);
   } catch (const std::exception& e) {
-    built.error = std::string("the grader could not read the runner it linked: ") + e.what();
-    return false;
+    return stop(built, Fault::grader, std::string("the grader could not read the runner it linked: ") + e.what());
   }
   return true;
 }
@@ -315,6 +336,35 @@ Toolchain load_toolchain(const std::string& path) {
   return t;
 }
 
+SymbolList list_symbols(const std::string& nm, const std::string& which, const std::string& file, const std::string& work,
+                        const BuildSettings& settings, const std::string& shown_as, const std::string& what,
+                        std::size_t max_size) {
+  SymbolList list;
+  ToolResult run;
+  try {
+    run = run_tool({nm, "-C", "-P", which, file}, work, {fs::path(file).parent_path().string()}, settings, max_size);
+  } catch (const std::exception& e) {
+    list.fault = Fault::grader;
+    list.error = "the grader could not run nm on " + shown_as + ": " + e.what();
+    return list;
+  }
+  // nm ran: what it made of the student's object (or the runner linked from it) is theirs.
+  list.fault = Fault::submission;
+  if (run.cut) {
+    list.error = shown_as + " makes the symbol list over the " + size_text(max_size) + " the grader reads: nm listed " +
+                 (run.timed_out ? "more than " : "") + size_text(run.total) + " of " + what +
+                 ", where a file of a few functions lists a few KiB";
+  } else if (run.timed_out) {
+    list.error = shown_as + ": nm took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s to list " + what;
+  } else if (!WIFEXITED(run.status) || WEXITSTATUS(run.status) != 0) {
+    list.error = shown_as + ": nm could not list " + what + " (nm " + describe_wait_status(run.status) + ")";
+  } else {
+    list.fault = Fault::none;
+    list.names = symbol_names(run.output);
+  }
+  return list;
+}
+
 BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, const std::string& source,
                          const std::string& shown_as, const BuildSettings& settings) {
   BuiltRunner built;
@@ -324,11 +374,11 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   try {
     text = read_at_most(source, kMaxSource);
   } catch (const std::exception&) {
-    built.error = shown_as + ": cannot read the file";
+    stop(built, Fault::submission, shown_as + ": cannot read the file");
     return built;
   }
   if (text.size() > kMaxSource) {
-    built.error = shown_as + ": larger than " + std::to_string(kMaxSource >> 10) + " KiB; an exercise file is a few";
+    stop(built, Fault::submission, shown_as + ": larger than " + size_text(kMaxSource) + "; an exercise file is a few KiB");
     return built;
   }
 
@@ -345,7 +395,7 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
       built.runtime = runtime_files(cached);
     } catch (const std::exception& e) {
       built = BuiltRunner{};
-      built.error = std::string("the grader could not read its runner: ") + e.what();
+      stop(built, Fault::grader, std::string("the grader could not read its runner: ") + e.what());
     }
     return built;
   }
@@ -355,17 +405,15 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   if (!compile_stage(toolchain, stages, shown_as, settings, built)) return built;
   // The answers the file refers to, by any kind of reference ("U", or "w" and "v" for a weak or
   // aliased declaration, which pull nothing into the link but name what the file reaches for).
-  if (!add_answers(toolchain, key, "--undefined-only", stages.object, stages.linked, settings, built)) {
-    built.error = "the grader could not list the functions " + shown_as + " refers to";
+  if (!add_answers(toolchain, key, "--undefined-only", stages.object, stages.linked, settings, shown_as,
+                   "the names it refers to", built))
     return built;
-  }
   if (!link_stage(toolchain, *inputs, stages, shown_as, settings, built)) return built;
   // What the runner holds of the library's answers, by whatever route they came in: its own
   // symbols (library_answers.hpp).
-  if (!add_answers(toolchain, key, "--defined-only", stages.runner, stages.linked, settings, built)) {
-    built.error = "the grader could not list what the runner of " + shown_as + " holds";
+  if (!add_answers(toolchain, key, "--defined-only", stages.runner, stages.linked, settings, shown_as,
+                   "the names its runner holds", built))
     return built;
-  }
   match_oracles(key, built);
   const std::string tmp = temporary(cached);
   fs::copy_file(stages.runner, tmp, fs::copy_options::overwrite_existing);

@@ -62,12 +62,14 @@ void RunnerProcess::begin_test(std::chrono::steady_clock::time_point deadline, d
   cpu_at_begin_ = running_ ? cpu_seconds() : 0.0;
   last_cpu_check_ = std::chrono::steady_clock::now();
   failure_.clear();
+  fault_ = Fault::none;
   printed_ = Printed{};
 }
 
 Printed RunnerProcess::end_test() {
   if (running_ && print_fd_ >= 0) drain_prints(print_fd_);
   if (!failure_.empty()) stop();
+  test_faults_.push_back(fault_);
   Printed out = std::move(printed_);
   printed_ = Printed{};
   return out;
@@ -75,14 +77,14 @@ Printed RunnerProcess::end_test() {
 
 void RunnerProcess::start() {
   int request[2], answer[2], prints[2];
-  if (pipe2(request, O_CLOEXEC) != 0) fail("the grader could not create a pipe");
+  if (pipe2(request, O_CLOEXEC) != 0) fail("the grader could not create a pipe", Fault::grader);
   if (pipe2(answer, O_CLOEXEC) != 0) {
     close(request[0]), close(request[1]);
-    fail("the grader could not create a pipe");
+    fail("the grader could not create a pipe", Fault::grader);
   }
   if (pipe2(prints, O_CLOEXEC) != 0) {
     close(request[0]), close(request[1]), close(answer[0]), close(answer[1]);
-    fail("the grader could not create a pipe");
+    fail("the grader could not create a pipe", Fault::grader);
   }
   SandboxSpec spec;
   spec.argv = {config_.binary};
@@ -102,7 +104,7 @@ void RunnerProcess::start() {
     program_ = spawn(spec);
   } catch (const std::exception& e) {
     for (int fd : {spec.fds[0].second, request[0], request[1], answer[0], answer[1], prints[0], prints[1]}) close(fd);
-    fail(std::string("the grader could not start your code: ") + e.what());
+    fail(std::string("the grader could not start your code: ") + e.what(), Fault::grader);
   }
   for (int fd : {spec.fds[0].second, request[0], answer[1], prints[1]}) close(fd);
   request_fd_ = request[1];
@@ -123,8 +125,11 @@ void RunnerProcess::stop() {
   running_ = false;
 }
 
-void RunnerProcess::fail(const std::string& what) {
-  if (failure_.empty()) failure_ = what;
+void RunnerProcess::fail(const std::string& what, Fault fault) {
+  if (failure_.empty()) {
+    failure_ = what;
+    fault_ = fault;
+  }
   stop();
   throw RunnerFailure(failure_);
 }
@@ -198,7 +203,7 @@ void RunnerProcess::read_answer(void* out, std::size_t size) {
     }
     pollfd fds[2] = {{answer_fd_, POLLIN, 0}, {print_fd_, POLLIN, 0}};
     const int ready = poll(fds, 2, static_cast<int>(std::min<long long>(left.count(), 100)));
-    if (ready < 0 && errno != EINTR) fail("the grader could not wait for your code");
+    if (ready < 0 && errno != EINTR) fail("the grader could not wait for your code", Fault::grader);
     if (ready <= 0) continue;
     if (fds[1].revents & POLLIN) drain_prints(print_fd_);
     if (fds[1].revents & (POLLHUP | POLLERR) && !(fds[1].revents & POLLIN)) fds[1].fd = -1;

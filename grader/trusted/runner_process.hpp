@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "fault.hpp"
 #include "protocol/protocol.hpp"
 #include "sandbox.hpp"
 
@@ -70,6 +71,9 @@ class RunnerProcess {
   Printed end_test();
   /// The failure of the current test, or empty.
   const std::string& failure() const { return failure_; }
+  /// Who caused each test's failure, one per end_test() in order (Fault::none: it did not fail).
+  /// Kept here, where it is known, since a test's result keeps the failure's text alone.
+  const std::vector<Fault>& test_faults() const { return test_faults_; }
 
   /// Sends `arguments` to `function` and returns the value's bytes, exactly `value_size` of
   /// them. Throws RunnerFailure or StudentException.
@@ -85,7 +89,7 @@ class RunnerProcess {
 
  private:
   void start();
-  [[noreturn]] void fail(const std::string& what);
+  [[noreturn]] void fail(const std::string& what, Fault fault = Fault::submission);
   // Reads exactly `size` bytes of the answer into `out`, draining the prints meanwhile.
   void read_answer(void* out, std::size_t size);
   void drain_prints(int fd_ready);
@@ -103,6 +107,8 @@ class RunnerProcess {
   double cpu_at_begin_ = 0.0;  // the runner's CPU time when the test began (0: started since)
   std::chrono::steady_clock::time_point last_cpu_check_;
   std::string failure_;
+  Fault fault_ = Fault::none;
+  std::vector<Fault> test_faults_;
   Printed printed_;
   Protections protections_;
   int starts_ = 0;

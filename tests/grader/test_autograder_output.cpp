@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "grader.hpp"
 #include "report_html.hpp"
@@ -161,25 +162,43 @@ TEST_CASE("results.json's tests are HTML whose only tags are the grader's, and s
   CHECK(all.find("&amp;amp;") != std::string::npos);  // the student's entity, shown as typed
 }
 
-TEST_CASE("extra_data.grader counts the grader's own failures, never the student's text") {
+namespace {
+
+int faults_in(const std::vector<grading::ProblemResult>& problems) {
+  std::ostringstream out;
+  grading::write_gradescope(out, problems, 1.0, {{}, "after_published", 1234});
+  const nlohmann::json json = nlohmann::json::parse(out.str());
+  CHECK(json.at("extra_data").at("grader").at("seed") == 1234);
+  return json.at("extra_data").at("grader").at("grader_faults").get<int>();
+}
+
+}  // namespace
+
+TEST_CASE("extra_data.grader counts the grader's own failures, typed where they happen, never a text") {
   HiddenFixture f;
   // The student prints and throws what the grader would say: it counts nothing.
   f.ra.results[0].printed = "the grader could not start your code: errno 11 Resource temporarily unavailable\n";
   f.ra.results[0].findings = {"your code threw an exception: \"the grader could not start your code\""};
-  std::ostringstream clean;
-  grading::write_gradescope(clean, {f.ra, f.rb}, 1.0, {{}, "after_published", 1234});
-  const nlohmann::json ok = nlohmann::json::parse(clean.str());
-  CHECK(ok.at("extra_data").at("grader").at("seed") == 1234);
-  CHECK(ok.at("extra_data").at("grader").at("grader_faults") == 0);
+  CHECK(faults_in({f.ra, f.rb}) == 0);
 
-  // A runner the grader could not start, and a problem it could not build.
+  // Failures the submission caused, worded as the grader's used to be: a runner that stopped
+  // and a symbol list over its bound (the older text of runner_build.cpp). Seen to count 2
+  // when grader_faults() matched "the grader could not ".
   f.ra.results[1].interrupted = true;
-  f.ra.results[1].findings = {"the grader could not start your code: sandbox: cannot start a process: "
-                              "Resource temporarily unavailable (/tmp/x/runner-1a)"};
-  f.rb.failure = "the grader could not build the runner: sandbox: cannot start a process";
-  std::ostringstream faulty;
-  grading::write_gradescope(faulty, {f.ra, f.rb}, 1.0, {});
-  CHECK(nlohmann::json::parse(faulty.str()).at("extra_data").at("grader").at("grader_faults") == 2);
+  f.ra.results[1].findings = {"the grader could not start your code during this test"};
+  f.rb.failure = "the grader could not list the functions exercises/p2.cpp refers to";
+  CHECK(faults_in({f.ra, f.rb}) == 0);
+
+  // A runner the grader could not start, and a problem it could not build, whatever their
+  // words: typed as the grader's where they happened. Seen to count 0 under the text match.
+  f.ra.results[1].grader_fault = true;
+  f.ra.results[1].findings = {"sandbox: cannot start a process: Resource temporarily unavailable (/tmp/x/runner-1a)"};
+  f.rb.grader_fault = true;
+  f.rb.failure = "sandbox: cannot start a process";
+  CHECK(faults_in({f.ra, f.rb}) == 2);
+  // A problem not built counts once, not once per test it could not grade.
+  for (grading::TestResult& r : f.rb.results) r.grader_fault = true;
+  CHECK(faults_in({f.ra, f.rb}) == 2);
 }
 
 TEST_CASE("the report's page escapes every text, draws each figure from its data and marks the wrong entries") {

@@ -6,6 +6,8 @@ cmake_minimum_required(VERSION 3.22)
 # pause that lets anything the submission left behind act, the case checks that
 #   - the grader exited 0 and results.json is valid and unchanged since the grader exited;
 #   - nothing wrote @WORK@/pwned or @WORK@/flood.bin (outside the sandbox);
+#   - results.json records no fault of the grader's own (extra_data.grader.grader_faults): every
+#     failure a case causes is the submission's, and none buys it a second grading;
 #   - each problem in SCORES ("1b=0;1a=23") earned exactly that;
 #   - the report matches EXPECT; neither it nor results.json's texts match FORBID (regular
 #     expressions) or hold a byte sequence of FORBID_BYTES (hexadecimal, ","-separated).
@@ -96,6 +98,11 @@ if(DEFINED FORBID_BYTES)
       endif()
     endforeach()
   endforeach()
+endif()
+
+string(JSON faults GET "${json}" extra_data grader grader_faults)
+if(NOT faults EQUAL 0)
+  message(FATAL_ERROR "results.json records ${faults} fault(s) of the grader's own, where the submission caused every failure:\n${out}")
 endif()
 
 # Scores per problem, from results.json (tests are named "<key> ...").
