@@ -4,7 +4,8 @@
 # PROGRAM (the program the command names, built here):
 #   1. as printed, with --no-plots --no-replay: the replay's log OFFLINE_CSV (under OPSPACE_OUT);
 #   2. with --live --port 0 added: the program must print "live: http://127.0.0.1:PORT/" and
-#      that it replays TEST, its page must answer on PORT, and after LIVE_SECONDS of real time
+#      that it replays TEST, its page must answer on PORT; its event stream is then opened (the
+#      run waits for it to start, docs/live.md) and read, and after LIVE_SECONDS of real time
 #      SIGINT must end it with status 0. Its session log LIVE_CSV must start as the replay's log:
 #      every column the two logs share, row by row, equal to 1e-9 (relative, at least 1e-12
 #      absolute) over the rows the live run made, 100 at least (0.1 s of a 1 ms step: a slow
@@ -74,8 +75,9 @@ OPSPACE_OUT="$work/offline" OPSPACE_WATCHDOG=0 "$program" "${test_args[@]}" --no
   > "$work/offline.txt" 2>&1 || true
 [ -s "$work/offline/$offline_csv" ] || fail "the replay wrote no $offline_csv:$(cat "$work/offline.txt")"
 
-# live NAME ARG...: runs PROGRAM ARG... --live --port 0 in $work/NAME for $live_seconds s of real
-# time after it printed its address, then SIGINT; its output in $work/NAME.txt.
+# live NAME ARG...: runs PROGRAM ARG... --live --port 0 in $work/NAME, fetches its page, opens its
+# event stream (the run starts then) for $live_seconds s of real time, then SIGINT; its output in
+# $work/NAME.txt.
 live() {
   local name=$1
   shift
@@ -104,10 +106,19 @@ live() {
   local status
   status=$(head -n 1 <&3)
   exec 3<&-
+  # Then its event stream, as the page opens it: the run starts then (it waits for the page),
+  # and the frames are read until the program ends.
+  exec 3<> "/dev/tcp/127.0.0.1/$port"
+  printf 'GET /events HTTP/1.1\r\nHost: 127.0.0.1:%s\r\n\r\n' "$port" >&3
+  cat <&3 > /dev/null &
+  local reader=$!
+  exec 3<&-
   sleep "$live_seconds"
   kill -INT "$pid"
   wait "$pid"
   local code=$?
+  kill "$reader" 2> /dev/null
+  wait "$reader" 2> /dev/null
   [ "$code" -eq 0 ] || fail "'$program $* --live' ended with status $code after SIGINT:$(cat "$work/$name.txt")"
   case $status in
     "HTTP/1."?" 200"*) ;;

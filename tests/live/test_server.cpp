@@ -80,3 +80,20 @@ TEST_CASE("the server streams the latest frame as a Server-Sent Event") {
   publisher.join();
   CHECK(received.rfind("data: {\"frame\":1}\n\n", 0) == 0);
 }
+
+TEST_CASE("the server counts its page as opened once the event stream opens, not at GET /") {
+  // The live run waits for opened() (live/run.hpp): the page's script opens /events once it can
+  // draw, so the run's t = 0 is the page's.
+  Fixture f;
+  CHECK_FALSE(f.server.opened());
+  REQUIRE(f.client.Get("/"));
+  CHECK_MESSAGE(!f.server.opened(), "the page's HTML alone is not a page that draws the run");
+  f.server.publish("{\"frame\":1}");
+  std::string received;
+  f.client.Get("/events", [&](const char* data, std::size_t size) {
+    received.append(data, size);
+    return received.find("\n\n") == std::string::npos;
+  });
+  CHECK(f.server.opened());
+  CHECK(received.rfind("data: {\"frame\":1}\n\n", 0) == 0);
+}

@@ -40,6 +40,7 @@ TEST_CASE("a controller that never returns ends the live program with the watchd
     live::LiveOptions options;
     options.watchdog = 0.5;
     options.duration = 5.0;
+    options.wait_for_page = false;  // no page here: the run starts at once
     std::ostringstream out;
     live::serve(lab, options, out);
     std::_Exit(0);  // the watchdog did not stop it

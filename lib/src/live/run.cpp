@@ -74,6 +74,22 @@ std::string escape_script(std::string text) {
   return text;
 }
 
+// Prints the address, publishes the run's first frame (t = 0) and, if `wait`, waits until a page
+// opens its event stream, so that the run, and the reference's ghost beside it, start when the
+// student sees them. Returns false when a signal ended the wait first.
+bool wait_for_page(Server& server, Session& session, bool wait, std::ostream& out) {
+  const std::string address = "http://127.0.0.1:" + std::to_string(server.port()) + "/";
+  out << "live: " << address << std::endl;
+  out << "  open it in a browser (a forwarded port in the devcontainer); Ctrl-C ends the run" << std::endl;
+  server.publish(session.frame(0.0));
+  if (!wait || server.opened()) return true;
+  out << "  waiting for the page at " << address << ": the run starts when it opens" << std::endl;
+  while (!g_stop && !server.opened()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  if (g_stop) return false;
+  out << "  the page opened: the run starts at t = 0" << std::endl;
+  return true;
+}
+
 }  // namespace
 
 std::string viewer_path() {
@@ -137,10 +153,9 @@ LiveReport serve(Lab& lab, const LiveOptions& options, std::ostream& out) {
   Session session(lab, options.csv_path, options.spring);
   Server server(page(lab, options.spring.max_force), options.port, [&session](std::string_view body) { session.submit(body); });
   const StopOnSignal signals;
-  out << "live: http://127.0.0.1:" << server.port() << "/" << std::endl;
-  out << "  open it in a browser (a forwarded port in the devcontainer); Ctrl-C ends the run" << std::endl;
-
   LiveReport report;
+  if (!wait_for_page(server, session, options.wait_for_page, out)) return report;
+
   const double dt = session.dt();
   const auto ended = [&options, dt](const Session& s) {
     return options.duration > 0.0 && s.time() >= options.duration - 0.5 * dt;

@@ -30,6 +30,7 @@ struct Server::Impl {
   unsigned long long sequence = 0;  // of the latest frame
   bool stopping = false;
   std::atomic<int> streams{0};
+  std::atomic<bool> opened{false};  // a page has opened its event stream
 
   // The page's own origins: the only Host and Origin values accepted.
   bool own_host(const std::string& host) const {
@@ -84,6 +85,7 @@ Server::Server(std::string page, int port, CommandHandler on_command) : impl_(st
     res.set_header("Cache-Control", "no-store");
     auto sent = std::make_shared<unsigned long long>(0);
     ++s.streams;
+    s.opened = true;
     res.set_chunked_content_provider(
         "text/event-stream", [&s, sent](std::size_t, httplib::DataSink& sink) { return s.stream(*sent, sink); },
         [&s](bool) { --s.streams; });
@@ -133,5 +135,7 @@ void Server::publish(std::string frame) {
 }
 
 int Server::streams() const { return impl_->streams.load(); }
+
+bool Server::opened() const { return impl_->opened.load(); }
 
 }  // namespace opspace::live

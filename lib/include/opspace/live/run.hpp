@@ -15,8 +15,13 @@ namespace opspace::live {
 /// How a live run is served and paced.
 struct LiveOptions {
   int port = 0;             ///< 0: a free port
-  double duration = 0.0;    ///< simulated seconds of the current run before the program ends; 0: until Ctrl-C
+  /// Simulated seconds of the current run (from the page's opening) before the program ends; 0:
+  /// until Ctrl-C
+  double duration = 0.0;
   std::string csv_path;     ///< the session's log (empty: none)
+  /// Wait for a page to open the event stream before the run starts (the programs' --live);
+  /// false: start at once, for a caller with no page (tests/live/test_watchdog.cpp).
+  bool wait_for_page = true;
   Spring spring;            ///< the push's spring
   double frame_rate = 60.0; ///< frames per second sent to the page
   /// Lag (wall seconds) after which the pacing gives up catching up and resynchronises,
@@ -40,15 +45,17 @@ std::string page(Lab& lab, double max_force);
 
 /// What a paced run measured, for the terminal's summary.
 struct LiveReport {
-  double wall_seconds = 0.0;  ///< from the first step to the end
+  double wall_seconds = 0.0;  ///< from the page's opening (the first step) to the end
   long steps = 0;             ///< simulation steps taken
   long resyncs = 0;           ///< times the pacing fell more than max_lag behind
   long frames = 0;            ///< frames published
 };
 
 /// Serves `lab` live (see the file comment), printing "live: http://127.0.0.1:PORT/" on `out`
-/// first. Ctrl-C (SIGINT) or SIGTERM ends it cleanly. Throws std::runtime_error when it cannot
-/// listen.
+/// first, then that it waits for the page: the run stays at t = 0 until a page (or any client)
+/// opens the event stream, GET /events, so that the student's run and the reference's ghost
+/// start when the page does. Ctrl-C (SIGINT) or SIGTERM ends it cleanly, waiting or not. Throws
+/// std::runtime_error when it cannot listen.
 LiveReport serve(Lab& lab, const LiveOptions& options, std::ostream& out);
 
 /// The session stepped without clock, server or input for `duration` simulated seconds, as an

@@ -37,6 +37,9 @@ class Server {
   void publish(std::string frame);
   /// Streams open now.
   int streams() const;
+  /// Whether a page has opened its event stream (/events) since construction, even if it has
+  /// closed it since: the live run waits for this to start (live/run.hpp).
+  bool opened() const;
 
  private:
   struct Impl;
