@@ -11,12 +11,16 @@ namespace {
 
 constexpr Part kLaws[] = {Part::kTipPd, Part::kPseudoInverseNullspace, Part::kDynamicallyConsistentNullspace};
 
-// What the page says of the physics (docs/live.md, "What a push does to the tip").
+// What the run shows, measured: {K} is the latest value of plot series K (docs/live.md), so the
+// heading never promises what a student's controller may not do.
 constexpr const char* kSubtitle =
-    "unpushed, PART3's tip holds while joint 2 moves and PART2's wanders; a push moves it under every law";
+    "now: tip error |x - x_d| = {0} mm (predicted for the push: {1} mm); joint 2 at q2 = {2} rad, its goal "
+    "q2_d = {3} rad";
+// What the page says of the physics (docs/live.md, "What a push does to the tip").
 constexpr const char* kNote =
-    "PART3's projector keeps the controller's own joint task from accelerating the tip: unpushed, its tip "
-    "stays within a millimetre of x_d while joint 2 swings; PART2's wanders by centimetres to decimetres. "
+    "PART3's projector keeps the controller's own joint task from accelerating the tip: unpushed, a correct "
+    "PART3 (the reference's) keeps its tip within a millimetre of x_d while joint 2 swings; PART2's wanders by "
+    "centimetres to decimetres. "
     "A push is no controller torque: it reaches the tip as Jv A^-1 Je^T F, and the tip's PD holds it at the "
     "static offset Jv A^-1 Je^T F / kpx (orange, for the push of the moment; the tip follows it about "
     "kvx/kpx = 0.4 s late while the arm moves), undone when you let go. A stiffer kpx makes it smaller.";

@@ -15,7 +15,8 @@ LabInfo page(const std::string& program) {
   LabInfo info;
   info.program = program;
   info.title = program + ": problem 2 on the KUKA iiwa, live";
-  info.subtitle = "push the elbow while the tool tracks: the task holds, the null space gives";
+  // What the run shows, measured ({K}: plot series K's latest value, docs/live.md): no promise.
+  info.subtitle = "now: position error |x_p - x_pd| = {0} mm, orientation error {1} deg; push the elbow and watch both";
   info.laws = {"decoupled PD + feed-forward + null-space damping + gravity compensation"};
   const hw2::p2::Goal g = p2::goal(0.0);
   info.gains = {{"kpx", "kp, task (1/s^2)", 10.0, 200.0, g.kpx},

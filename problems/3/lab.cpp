@@ -15,7 +15,9 @@ LabInfo page(const std::string& program) {
   LabInfo info;
   info.program = program;
   info.title = program + ": problem 3, the iiwa pushing on a plane, live";
-  info.subtitle = "pull the tool off the plane and let go: it comes back to 10 N";
+  // What the run shows, measured ({K}: plot series K's latest value, docs/live.md): no promise.
+  info.subtitle = "now: contact force F_x = {1} N (10 ms mean; F_d = {2} N), tool tilt {3} deg; pull the tool off the "
+                  "plane and let go";
   info.laws = {"unified motion and force control"};
   const hw2::p3::Goal g = p3::goal(0.0);
   info.gains = {{"kpx", "kp, motion (1/s^2)", 10.0, 200.0, g.kpx},

@@ -14,7 +14,9 @@ LabInfo page(const std::string& program, Target target) {
   LabInfo info;
   info.program = program;
   info.title = program + ": problem 4, the 3R arm " + p4::describe(target) + ", live";
-  info.subtitle = "drag the arm into and out of the singularity; switch to the plain law and compare";
+  // What the run shows, measured ({K}: plot series K's latest value, docs/live.md), then what to try.
+  info.subtitle = "now: distance to the target {0} mm, singular values of Jv {1}, {2}, {3} m; drag the arm into and "
+                  "out of the singularity, switch to the plain law and compare";
   info.laws = {"your controller (question v)", "the plain operational-space controller"};
   const hw2::p4::Goal g = p4::goal(target);
   info.gains = {{"kpx", "kp, tip (1/s^2)", 10.0, 200.0, g.kpx},

@@ -88,6 +88,8 @@ function main() {
     return hit ? hit.body : null;
   };
   api.send = (body) => commands.send(body);
+  /// The plots (add, clear, draw): the check feeds them values whose labels are wide.
+  api.plots = plots;
   api.render = () => view.render();
 }
 

@@ -8,7 +8,9 @@
 // newtons and moves it away from where the same run goes unpushed; pause holds t and the pose;
 // the law switch reaches the frames and the plots keep drawing; problem 1b's page says what the
 // physics does (its note), shows the measured tip offset beside the one predicted for the push,
-// and draws the reference's tip as a ghost that follows the law; a refused command is shown; no
+// and draws the reference's tip as a ghost that follows the law; the run waited for the page
+// (its first frame at t = 0); the subtitle shows the measured tip error and no promise; every
+// plot label lies inside its canvas, also for the widest labels; a refused command is shown; no
 // console errors; SIGINT ends the program with status 0 within 3 s, its port closed, and the
 // page says that it has stopped. The screenshot is taken during the drag.
 // Exit 0: all passed; 1: a check failed; 77: Chromium or playwright-core is missing (ctest
@@ -98,6 +100,11 @@ try {
   check(ready, 'the page connects to the event stream and draws its first frame');
   if (!ready) throw new Error('not ready');
   const data = await page.evaluate(() => window.opspaceLive.data);
+  // The program waited for the page (issue 46): the first frame it got is at the run's start,
+  // although the browser opened it seconds after the address was printed.
+  const firstT = await page.evaluate(() => window.opspaceLive.firstFrame.t);
+  check(firstT < 0.1 && /waiting for the page at/.test(output),
+    `the run waited for the page: its first frame is at t = ${firstT.toFixed(3)} s (< 0.1 s), and the program said it waits`);
   const frame = () => page.evaluate(() => window.opspaceLive.lastFrame);
   const state = () => page.evaluate(() => { const a = window.opspaceLive; return { frames: a.frames, t: a.lastFrame.t, fps: a.fps }; });
   /// Waits for a frame that satisfies `test` (a function of the frame, run in the page).
@@ -339,6 +346,38 @@ try {
   } else {
     console.log('note: one control law: no law switch to check');
   }
+  // The page's heading shows what the run shows, measured: the subtitle's first value is the tip
+  // error of the plot's legend, and no promise. Seen to fail before (issue 46): "unpushed, PART3's
+  // tip holds while joint 2 moves ...", no value.
+  const heading = await page.evaluate(() => {
+    const sub = document.getElementById('subtitle'), first = sub && sub.querySelector('.value');
+    return { text: sub ? sub.textContent : '', value: first ? first.textContent : null, legend: document.getElementById('value-0-0').textContent };
+  });
+  check(!/\b(holds?|stays|keeps|wanders|comes back)\b/.test(heading.text) && heading.value !== null && heading.value === heading.legend &&
+    Number.isFinite(Number(heading.value)) && /\|x - x_d\| = [-0-9.e+]+ mm/.test(heading.text),
+  `the subtitle shows the measured tip error, no promise: '${heading.text}' (legend: ${heading.legend} mm)`);
+
+  // No plot label is clipped: every label's box (measured as drawn) lies inside its canvas, with
+  // the run's values and with values whose labels are the widest the plots write (10 characters).
+  // Seen to fail with the plots' fixed 48 px margin: '-0.0001235' from x = -12.6.
+  const clipped = (drawn) => drawn.flatMap((p, i) => p.boxes.filter((b) => b.left < 0 || b.top < 0 || b.right > p.width || b.bottom > p.height)
+    .map((b) => `drawing ${i}: '${b.text}' at x ${b.left.toFixed(1)}..${b.right.toFixed(1)}, y ${b.top.toFixed(1)}..${b.bottom.toFixed(1)} of ${p.width} x ${p.height}`));
+  const asRun = await page.evaluate(() => { window.opspaceLive.plots.draw(window.opspaceLive.lastFrame.t); return window.opspaceLive.plotLabels; });
+  const wide = await page.evaluate(() => {
+    const api = window.opspaceLive, n = api.data.plots.reduce((k, p) => k + p.series.length, 0), drawn = [];
+    for (const [a, b] of [[-0.00012345, -1234567.8], [-1.2345e-7, -9.876e-8], [1.2345e21, -12345.6]]) {
+      api.plots.clear();
+      api.plots.add([[0, ...Array(n).fill(a)], [1, ...Array(n).fill(b)]]);
+      api.plots.draw(1);
+      drawn.push(...api.plotLabels);
+    }
+    api.plots.clear();
+    return drawn;
+  });
+  const outside = [...clipped(asRun), ...clipped(wide)];
+  check(asRun.length === data.plots.length && outside.length === 0,
+    `every plot label lies inside its canvas (${asRun.length} plots as run, ${wide.length} with wide labels)${outside.length ? `: ${outside.join('; ')}` : ''}`);
+
   const latencies = await page.evaluate(() => window.opspaceLive.latencies);
   const sorted = [...latencies].sort((x, y) => x - y);
   check(latencies.length > 0, `every command is acknowledged by a frame: ${latencies.length} latencies, median ${sorted.length ? sorted[sorted.length >> 1].toFixed(0) : '-'} ms, ` +

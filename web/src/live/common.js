@@ -3,7 +3,8 @@
 // The test hook (web/test/check_live.mjs, bench/live/bench_live.mjs).
 export const api = {
   ready: false, stopped: false, frames: 0, lastFrame: null, latencies: [], fps: 0,
-  samples: 0, plotDraws: 0, commandErrors: [], lastSent: 0, trace: null,
+  samples: 0, plotDraws: 0, commandErrors: [], lastSent: 0, trace: null, firstFrame: null,
+  plotLabels: [],  // per plot at its last draw: {width, height, boxes: [{text, left, right, top, bottom}]}
 };
 window.opspaceLive = api;
 

@@ -12,6 +12,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px system-ui, sa
 #hud { position: absolute; top: 8px; left: 10px; background: rgba(255,255,255,0.88); padding: 6px 10px; border-radius: 6px; max-width: 46%; }
 #hud h1 { font-size: 15px; margin: 0 0 2px 0; }
 #hud .sub { margin: 0 0 4px 0; color: #555; }
+#hud .sub .value { font: 600 13px ui-monospace, monospace; color: #1d2330; }
 #readout { margin: 4px 0 0 0; font: 13px ui-monospace, monospace; white-space: pre; }
 #legend { list-style: none; margin: 4px 0 0 0; padding: 0; font-size: 12px; }
 .swatch { display: inline-block; width: 10px; height: 10px; margin-right: 6px; border-radius: 2px; }
@@ -38,6 +39,24 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px system-ui, sa
 #no-webgl { padding: 2em; }
 `;
 
+/// The subtitle's line: its text, each "{K}" in it a field that shows plot series K's latest
+/// value (docs/live.md): what the run shows, measured, rather than what it should do.
+function subtitleLine(text) {
+  const line = el('p', { class: 'sub', id: 'subtitle' });
+  const fields = [];
+  for (const part of text.split(/(\{\d+\})/)) {
+    const field = part.match(/^\{(\d+)\}$/);
+    if (!field) {
+      line.append(document.createTextNode(part));
+      continue;
+    }
+    const value = el('span', { class: 'value', 'data-series': field[1] }, '-');
+    fields.push({ series: Number(field[1]), value });
+    line.append(value);
+  }
+  return { line, fields };
+}
+
 /// Builds the page's elements and adds them to the document: the ones the other modules use.
 export function buildPage(data) {
   document.title = `${data.title} (live)`;
@@ -51,7 +70,8 @@ export function buildPage(data) {
   const stage = el('div', { id: 'stage' });
   const hud = el('div', { id: 'hud' });
   hud.append(el('h1', {}, data.title));
-  if (data.subtitle) hud.append(el('p', { class: 'sub' }, data.subtitle));
+  const subtitle = subtitleLine(data.subtitle || '');
+  if (data.subtitle) hud.append(subtitle.line);
   const readout = el('div', { id: 'readout' });
   readout.textContent = 't = 0.000 s   real time x0.00\nconnecting...';
   hud.append(readout);
@@ -109,7 +129,7 @@ export function buildPage(data) {
   const status = el('div', { id: 'status' });
   side.append(status, el('p', {}, 'Drag the arm to pull it with a spring; drag elsewhere to turn the view, wheel to zoom.'));
   if (data.note) side.append(el('p', { id: 'note' }, data.note));
-  const plots = buildPlots(data, side);
+  const plots = buildPlots(data, side, subtitle.fields);
   document.body.append(stage, hud, stopped, pushLabel, side);
 
   function say(text, bad = false) {

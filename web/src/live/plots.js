@@ -2,7 +2,18 @@
 import { el } from '../scene.js';
 import { api, number, trimmed } from './common.js';
 
-export function buildPlots(data, parent) {
+/// Writes `text` at (x, y) with the context's alignment and records its box (CSS pixels of the
+/// canvas) in `boxes`, for the check that no label is clipped (window.opspaceLive.plotLabels).
+function label(ctx, text, x, y, boxes) {
+  ctx.fillText(text, x, y);
+  const m = ctx.measureText(text);
+  boxes.push({ text, left: x - m.actualBoundingBoxLeft, right: x + m.actualBoundingBoxRight,
+    top: y - m.actualBoundingBoxAscent, bottom: y + m.actualBoundingBoxDescent });
+}
+
+/// The plots, under `parent`; `fields` ({series, value}: the subtitle's) show the latest value
+/// of plot series `series` as the legends do.
+export function buildPlots(data, parent, fields = []) {
   const window_ = data.window || 10;
   const plots = [];
   let column = 1;  // samples are [t, values of plot 0's series, plot 1's, ...]
@@ -42,6 +53,8 @@ export function buildPlots(data, parent) {
   function draw(t) {
     const end = Math.max(window_, t), start = end - window_;
     const latest = rows[rows.length - 1];
+    for (const f of fields) f.value.textContent = latest ? trimmed(latest[1 + f.series]) : '-';
+    api.plotLabels = [];
     for (const p of plots) {
       p.values.forEach((value, k) => { value.textContent = latest ? trimmed(latest[p.first + k]) : '-'; });
       const ratio = window.devicePixelRatio || 1;
@@ -62,7 +75,12 @@ export function buildPlots(data, parent) {
       if (!(hi >= lo)) { lo = -1; hi = 1; }
       const pad = Math.max((hi - lo) * 0.08, Math.abs(hi) * 1e-3, 1e-9);
       lo -= pad; hi += pad;
-      const left = 48, right = 6, top = 6, bottom = 16;
+      ctx.font = '10px ui-monospace, monospace';
+      const high = trimmed(hi - pad), low = trimmed(lo + pad);
+      // The left margin fits the wider value label (a fixed one clipped '-0.0001234'), up to
+      // half the canvas.
+      const widest = Math.max(ctx.measureText(high).width, ctx.measureText(low).width);
+      const left = Math.min(Math.ceil(widest) + 8, Math.floor(W / 2)), right = 6, top = 8, bottom = 16;
       const x = (s) => left + ((s - start) / window_) * (W - left - right);
       const y = (v) => top + ((hi - v) / (hi - lo)) * (H - top - bottom);
       ctx.strokeStyle = '#e1e3e8';
@@ -71,15 +89,16 @@ export function buildPlots(data, parent) {
       for (const v of [lo + pad, hi - pad]) { ctx.moveTo(left, y(v)); ctx.lineTo(W - right, y(v)); }
       ctx.stroke();
       ctx.fillStyle = '#666';
-      ctx.font = '10px ui-monospace, monospace';
       ctx.textAlign = 'right';
       ctx.textBaseline = 'middle';
-      ctx.fillText(trimmed(hi - pad), left - 4, y(hi - pad));
-      ctx.fillText(trimmed(lo + pad), left - 4, y(lo + pad));
+      const boxes = [];
+      label(ctx, high, left - 4, y(hi - pad), boxes);
+      label(ctx, low, left - 4, y(lo + pad), boxes);
       ctx.textBaseline = 'bottom';
-      ctx.fillText(`${number(end, 1)} s`, W - right, H);
+      label(ctx, `${number(end, 1)} s`, W - right, H, boxes);
       ctx.textAlign = 'left';
-      ctx.fillText(`${number(start, 1)} s`, left, H);
+      label(ctx, `${number(start, 1)} s`, left, H, boxes);
+      api.plotLabels.push({ width: W, height: H, boxes });
       ctx.save();
       ctx.beginPath();
       ctx.rect(left, 0, W - left - right, H - bottom);

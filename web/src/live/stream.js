@@ -30,6 +30,7 @@ export function openStream(commands, plots, stopped) {
     lastT = frame.t;
     api.frames += 1;
     api.lastFrame = frame;
+    if (!api.firstFrame) api.firstFrame = frame;  // the run waits for the page: t = 0 (check_live.mjs)
     if (api.trace) api.trace.push(frame);  // the test's record (check_live.mjs)
     arrivals.push(now);
     state.count(now);

@@ -56,7 +56,10 @@ struct Ghost {
 struct LabInfo {
   std::string program;   ///< e.g. "hw2-p1": the log's and the terminal's name
   std::string title;     ///< the page's heading
-  std::string subtitle;  ///< one line under it
+  /// One line under it: what the run shows, measured, never a promise (a student's controller
+  /// may not do it). "{K}" stands for the latest value of plot series K (all plots' series in
+  /// order, as plot_values), which the page writes in and updates as the run goes.
+  std::string subtitle;
   std::string note;      ///< what the physics does, in a few sentences (empty: none)
   std::vector<std::string> laws;  ///< the laws the page can switch between (one: no switch)
   int law = 0;                    ///< the law at the start and after a reset
