@@ -359,13 +359,14 @@ try {
 
   // No plot label is clipped: every label's box (measured as drawn) lies inside its canvas, with
   // the run's values and with values whose labels are the widest the plots write (10 characters).
-  // Seen to fail with the plots' fixed 48 px margin: '-0.0001235' from x = -12.6.
+  // Seen to fail with the plots' fixed 48 px margin: '-0.0001234' from x = -15.2 (joint 2 of a
+  // PART3 run drew '-0.000001938').
   const clipped = (drawn) => drawn.flatMap((p, i) => p.boxes.filter((b) => b.left < 0 || b.top < 0 || b.right > p.width || b.bottom > p.height)
     .map((b) => `drawing ${i}: '${b.text}' at x ${b.left.toFixed(1)}..${b.right.toFixed(1)}, y ${b.top.toFixed(1)}..${b.bottom.toFixed(1)} of ${p.width} x ${p.height}`));
   const asRun = await page.evaluate(() => { window.opspaceLive.plots.draw(window.opspaceLive.lastFrame.t); return window.opspaceLive.plotLabels; });
   const wide = await page.evaluate(() => {
     const api = window.opspaceLive, n = api.data.plots.reduce((k, p) => k + p.series.length, 0), drawn = [];
-    for (const [a, b] of [[-0.00012345, -1234567.8], [-1.2345e-7, -9.876e-8], [1.2345e21, -12345.6]]) {
+    for (const [a, b] of [[-0.00012345, -0.00023456], [-1.2345e-7, -9.876e-8], [1.2345e21, -12345.6], [-1.9384e-6, -0.5384]]) {
       api.plots.clear();
       api.plots.add([[0, ...Array(n).fill(a)], [1, ...Array(n).fill(b)]]);
       api.plots.draw(1);

@@ -13,7 +13,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px system-ui, sa
 #hud h1 { font-size: 15px; margin: 0 0 2px 0; }
 #hud .sub { margin: 0 0 4px 0; color: #555; }
 #hud .sub .value { font: 600 13px ui-monospace, monospace; color: #1d2330; }
-#readout { margin: 4px 0 0 0; font: 13px ui-monospace, monospace; white-space: pre; }
+#readout { margin: 4px 0 0 0; font: 13px ui-monospace, monospace; white-space: pre-wrap; }
 #legend { list-style: none; margin: 4px 0 0 0; padding: 0; font-size: 12px; }
 .swatch { display: inline-block; width: 10px; height: 10px; margin-right: 6px; border-radius: 2px; }
 #error { display: none; margin-top: 6px; padding: 6px 8px; border-radius: 4px; background: #c0392b; color: #fff; font-weight: 600; }

@@ -76,9 +76,12 @@ export function buildPlots(data, parent, fields = []) {
       const pad = Math.max((hi - lo) * 0.08, Math.abs(hi) * 1e-3, 1e-9);
       lo -= pad; hi += pad;
       ctx.font = '10px ui-monospace, monospace';
-      const high = trimmed(hi - pad), low = trimmed(lo + pad);
-      // The left margin fits the wider value label (a fixed one clipped '-0.0001234'), up to
-      // half the canvas.
+      // A value a thousandth of the span from 0 is 0 on this axis: joint 2's '-0.000001938' was
+      // a 12-character label for a curve that touches 0.
+      const tick = (v) => (Math.abs(v) < (hi - lo) * 1e-3 ? '0' : trimmed(v));
+      const high = tick(hi - pad), low = tick(lo + pad);
+      // The left margin fits the wider value label (a fixed 48 px clipped it), up to half the
+      // canvas.
       const widest = Math.max(ctx.measureText(high).width, ctx.measureText(low).width);
       const left = Math.min(Math.ceil(widest) + 8, Math.floor(W / 2)), right = 6, top = 8, bottom = 16;
       const x = (s) => left + ((s - start) / window_) * (W - left - right);
