@@ -99,7 +99,15 @@ Range y_range(const RunFigure& f) {
     scale = std::max(scale, std::abs(f.bound * f.unit_scale));
   }
   Range r{lo, hi, false, false};
-  if (scale > 0.0 && hi > kClipFactor * scale) {
+  // A bound far below the top of a quantity that is never negative (1b's ratio test: the
+  // reference's ratio in the thousands, the bound 10, a student's near 1) would lie on the axis:
+  // a logarithmic axis from a thousandth of the bound keeps the bound and both runs readable.
+  const double bound = std::isfinite(f.bound) ? f.bound * f.unit_scale : 0.0;
+  if (lo >= 0.0 && bound > 0.0 && hi > 100.0 * bound) {
+    r.log = true;
+    r.lo = std::pow(10.0, std::floor(std::log10(bound / 1000.0)));
+    r.hi = std::pow(10.0, std::ceil(std::log10(hi)));
+  } else if (scale > 0.0 && hi > kClipFactor * scale) {
     if (lo >= 0.0) {
       r.log = true;
       r.lo = std::pow(10.0, std::floor(std::log10(scale / 1000.0)));
@@ -368,7 +376,7 @@ constexpr const char* kStyle =
     "h2{border-bottom:1px solid #ccc;padding-bottom:.2em}h3{font-size:1em;margin:.2em 0}"
     ".test{border-left:4px solid #2ca02c;padding:.3em .8em;margin:.8em 0}.test.fail{border-color:#d62728}"
     ".status{font-weight:bold}.fail .status{color:#d62728}.pass .status{color:#2ca02c}"
-    "table.grid td{text-align:right;padding:.2em .6em;border:1px solid #ddd}figure{margin:.5em 0}figcaption{font-size:.9em;color:#444}"
+    "table.grid caption{text-align:left;white-space:nowrap}table.grid td{text-align:right;padding:.2em .6em;border:1px solid #ddd}figure{margin:.5em 0}figcaption{font-size:.9em;color:#444}"
     ".key.student{color:#d62728}.key.reference{color:#1f77b4}.key.bound{color:#2ca02c}"
     "table.entries{border-collapse:collapse;font-size:.9em;margin:.5em 0}"
     "table.entries td,table.entries th{border:1px solid #ccc;padding:.1em .5em;text-align:right}"
