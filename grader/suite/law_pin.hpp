@@ -43,7 +43,7 @@ inline constexpr double kDifferentLaw = 5e-3;
 /// its own: what is left is the run's own behaviour.
 inline constexpr double kMovedShare = 0.1;
 
-/// The ticks of a run at which the torque was not the law's.
+/// How far the torque of a run strayed from the law's: the tick of the largest difference.
 class LawPin {
  public:
   /// `tol` as in Check::near: |computed - expected| <= tol * max(1, |expected|), entry-wise.
@@ -57,12 +57,9 @@ class LawPin {
     if (computed.size() == expected.size() && computed.allFinite())
       share = (computed - expected).cwiseAbs().maxCoeff() / scale;
     if (share <= tol_) return;
-    if (!differs_) differs_ = true, first_t_ = t;
+    differs_ = true;
     if (share > largest_share_) largest_share_ = share, largest_t_ = t, largest_ = share * scale;
   }
-
-  /// Whether the law of the run differs from the problem set's at some tick (beyond round-off).
-  bool differs() const { return differs_; }
 
   /// The gate of a behaviour test judging `judged` (yours and the reference's): passes when
   /// every tick applied the law, or when the law differs only by a slip that did not move any
@@ -103,7 +100,6 @@ class LawPin {
   double tol_;
   long ticks_ = 0;
   bool differs_ = false;
-  double first_t_ = 0.0;
   double largest_share_ = 0.0, largest_t_ = 0.0, largest_ = 0.0;
 };
 

@@ -140,6 +140,19 @@ double end_time(const RunFigure& f) {
   return t_end > 0.0 ? t_end : 1.0;
 }
 
+// The values labelled on the y axis of `y`: its powers of ten (logarithmic), else about five
+// round steps. The page's SVG and results.json's PNG label the same ones.
+std::vector<double> y_ticks(const Range& y) {
+  std::vector<double> ticks;
+  if (y.log) {
+    for (double v = y.lo; v <= y.hi * (1 + 1e-9); v *= 10.0) ticks.push_back(v);
+  } else {
+    const double dv = tick_step(y.hi - y.lo, 5);
+    for (double v = std::ceil(y.lo / dv) * dv; v <= y.hi * (1 + 1e-9) + 1e-300; v += dv) ticks.push_back(v);
+  }
+  return ticks;
+}
+
 void axes(std::ostream& out, double t_end, const Range& y, const std::string& unit) {
   const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
   const auto px = [&](double t) { return kLeft + w * t / t_end; };
@@ -151,14 +164,7 @@ void axes(std::ostream& out, double t_end, const Range& y, const std::string& un
     out << "<text x=\"" << px(t) << "\" y=\"" << kHeight - kBottom + 16 << "\" text-anchor=\"middle\">" << num(t, 4)
         << "</text>\n";
   out << "<text x=\"" << kLeft + w / 2 << "\" y=\"" << kHeight - 4 << "\" text-anchor=\"middle\">t (s)</text>\n";
-  std::vector<double> ticks;
-  if (y.log) {
-    for (double v = y.lo; v <= y.hi * (1 + 1e-9); v *= 10.0) ticks.push_back(v);
-  } else {
-    const double dv = tick_step(y.hi - y.lo, 5);
-    for (double v = std::ceil(y.lo / dv) * dv; v <= y.hi * (1 + 1e-9) + 1e-300; v += dv) ticks.push_back(v);
-  }
-  for (const double v : ticks)
+  for (const double v : y_ticks(y))
     out << "<text x=\"" << kLeft - 6 << "\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\">" << num(v, 4) << "</text>\n"
         << "<line x1=\"" << kLeft << "\" x2=\"" << kWidth - kRight << "\" y1=\"" << py(v) << "\" y2=\"" << py(v)
         << "\" stroke=\"#eee\"/>\n";
@@ -206,14 +212,7 @@ std::string png_plot(const RunFigure& f) {
   if (f.judged_from > 0.0) r.rect(kLeft, kTop, px(std::min(f.judged_from, t_end)), kTop + h, kShade);
   const double dt = tick_step(t_end, 8);
   for (double t = 0.0; t <= t_end * (1 + 1e-9); t += dt) r.number(num(t, 4), px(t) - 3.0 * num(t, 4).size(), kHeight - kBottom + 12, kInk);
-  std::vector<double> ticks;
-  if (y.log) {
-    for (double v = y.lo; v <= y.hi * (1 + 1e-9); v *= 10.0) ticks.push_back(v);
-  } else {
-    const double dv = tick_step(y.hi - y.lo, 5);
-    for (double v = std::ceil(y.lo / dv) * dv; v <= y.hi * (1 + 1e-9) + 1e-300; v += dv) ticks.push_back(v);
-  }
-  for (const double v : ticks) {
+  for (const double v : y_ticks(y)) {
     r.line(kLeft, py(v), kWidth - kRight, py(v), kGrid);
     r.number(num(v, 4), kLeft - 6, py(v), kInk, true);
   }
