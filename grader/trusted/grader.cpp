@@ -15,13 +15,14 @@
 #include <random>
 #include <thread>
 
-#include "cpu_share.hpp"
+#include "grading_group.hpp"
 #include "interrupt.hpp"
 #include "mistakes.hpp"
 #include "reference_runs.hpp"
 #include "remote_api.hpp"
 #include "report_html.hpp"
 #include "runner_build.hpp"
+#include "runner_cache.hpp"
 #include "runner_process.hpp"
 #include "sandbox.hpp"
 #include "student_text.hpp"
@@ -111,6 +112,16 @@ std::vector<BuiltRunner> build_all(const std::vector<const Problem*>& problems, 
   work();
   for (std::thread& t : threads) t.join();
   return built;
+}
+
+// What this grading may use: --memory, else the machine's; processes for the builds running
+// at once (one per core, each under its account's 64, build_tool.cpp) and as many runners (16
+// each, runner_process.cpp).
+GradingBudget grading_budget(const GraderOptions& options) {
+  GradingBudget budget;
+  budget.memory_bytes = options.memory_mib > 0 ? options.memory_mib << 20 : machine_memory();
+  budget.processes = (64 + 16) * static_cast<unsigned long long>(std::max(1u, std::thread::hardware_concurrency()));
+  return budget;
 }
 
 // A problem whose runner could not be built: every test 0, with the reason and no hint.
@@ -222,8 +233,9 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   become_subreaper();
   clean_up_when_interrupted();
-  // Before any child: the gradings running at once then share the CPU by group (cpu_share.hpp).
-  const std::string cpu_group = options.isolate ? join_own_cpu_group() : "";
+  // Before any child: the gradings running at once then share the machine by group
+  // (grading_group.hpp).
+  const GradingGroups groups = options.isolate ? join_grading_groups(grading_budget(options)) : GradingGroups{};
   Account account;
   try {
     account = options.isolate ? grading_account(options.user) : Account{};
@@ -249,8 +261,14 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   if (options.check_sandbox) {
     std::cout << (unprotected.empty() ? "sandbox: complete" : "sandbox: " + unprotected) << "\n"
               << "cpu share: "
-              << (cpu_group.empty() ? "no writable cgroup here: each test's limit counts the runner's CPU time"
-                                    : "a group per grading, " + cpu_group)
+              << (groups.cpu.empty() ? "no writable cgroup here: each test's limit counts the runner's CPU time"
+                                     : "a group per grading, " + groups.cpu)
+              << "\nmemory budget: "
+              << (groups.memory.empty() ? "no writable memory cgroup here: each program's address space is capped"
+                                        : "a group per grading, " + groups.memory)
+              << "\nprocess budget: "
+              << (groups.pids.empty() ? "no writable pids cgroup here: each program's account limits its processes"
+                                      : "a group per grading, " + groups.pids)
               << "\n";
     return unprotected.empty() ? 0 : kExitUnprotected;
   }
@@ -277,14 +295,15 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     return 1;
   }
   // The reference's runs of the figures, kept for every later grading by this grader.
-  set_reference_store(std::string(OPSPACE_GRADING_CACHE) + "/reference-" + toolchain.fingerprint);
+  const std::string cache_dir = options.cache_dir.empty() ? std::string(OPSPACE_GRADING_CACHE) : options.cache_dir;
+  set_reference_store(cache_dir + "/reference-" + toolchain.fingerprint);
   if (!unprotected.empty())
     std::cout << "UNPROTECTED: " << unprotected << ": the code graded ran with this grader's rights\n";
   std::cout << "opspace grader: problem set 2, " << options.exercises << " (seed " << options.seed << ")\n"
             << std::flush;
   const auto start = std::chrono::steady_clock::now();
   std::cerr << "building the runners of " << chosen.size() << " problem(s)...\n";
-  const BuildSettings settings{OPSPACE_GRADING_CACHE, account, options.isolate, 180.0};
+  const BuildSettings settings{cache_dir, account, options.isolate, 180.0};
   const std::vector<BuiltRunner> built = build_all(chosen, toolchain, options, settings);
   const double build_seconds = since(start);
   for (std::size_t i = 0; i < chosen.size(); ++i) {
@@ -322,6 +341,7 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   run_folder.reset();
   kill_account(account);
+  std::cerr << prune_runner_cache(cache_dir, options.cache_mib << 20).line(options.cache_mib << 20) << "\n";
   const double grading_seconds = since(grading_start), seconds = since(start);
   print_report(std::cout, results, options.hidden, options.seed);
   std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "report.hpp"
+#include "runner_cache.hpp"
 
 namespace opspace::grading {
 
@@ -32,6 +33,9 @@ struct GraderOptions {
   std::string user;                 ///< when root: a named account that runs student code (empty: the grading's own)
   bool allow_unprotected = false;   ///< grade even where the sandbox is incomplete (--unprotected)
   bool check_sandbox = false;       ///< only say whether the sandbox holds whole (--check-sandbox)
+  unsigned long long memory_mib = 0;  ///< the grading's memory budget (--memory; 0: the machine's)
+  unsigned long long cache_mib = kDefaultCacheMib;  ///< the runners' cache bound (--cache-limit)
+  std::string cache_dir;            ///< the runners' cache (--cache; empty: the build's)
 };
 
 /// Reads hw2-grade's command line into `options` (whose timeout is the default on entry).

@@ -37,12 +37,26 @@ bool parse_timeout(const std::string& text, GraderOptions& options, const char* 
   return true;
 }
 
+// A size in MiB: a whole number from 1 to 2^30 (a petabyte, past any machine).
+bool parse_mib(const std::string& text, unsigned long long& mib, const std::string& option, const char* program) {
+  char* end = nullptr;
+  const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
+  if (text.empty() || text[0] < '0' || text[0] > '9' || *end != '\0' || value == 0 || value > (1ull << 30)) {
+    std::cerr << program << ": " << option << " needs a whole number of MiB from 1 to " << (1ull << 30) << ", not '"
+              << text << "'\n";
+    return false;
+  }
+  mib = value;
+  return true;
+}
+
 }  // namespace
 
 int grader_usage(std::ostream& out, const char* program, double default_timeout, int code) {
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
       << "          [--gradescope FILE] [--junit FILE] [--html FILE] [--hidden TEXT]... [--sandbox-user NAME]\n"
       << "          [--unprotected] [--hidden-visibility WHEN] [--gradescope-format FORMAT] [--no-isolation]\n"
+      << "          [--memory MIB] [--cache DIR] [--cache-limit MIB]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
   for (const Problem& p : graded_suite()) {
@@ -69,6 +83,13 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "                 grading running at once (default: an account of this grading's own)\n"
       << "  --unprotected  grade even where the sandbox is incomplete (no namespaces): the code\n"
       << "                 graded runs with the grader's rights; for your own files only\n"
+      << "  --memory       this grading's memory budget for all it starts (compilers, runners,\n"
+      << "                 their /tmp), in MiB (default: the machine's; scripts/regrade divides it\n"
+      << "                 between the gradings it runs at once)\n"
+      << "  --cache        the runners' cache folder (default: the build's grading-cache)\n"
+      << "  --cache-limit  the runners' cache bound in MiB (default " << kDefaultCacheMib
+      << "): the least recently used\n"
+      << "                 runners are removed past it when a grading ends\n"
       << "  --check-sandbox say whether the sandbox holds whole here, and grade nothing\n"
       << "                 (exit 0 if it does, 3 if not)\n"
       << "  --no-isolation run the student's code without the sandbox (debugging only)\n"
@@ -109,6 +130,13 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
         exit_code = 2;
         return false;
       }
+    } else if ((arg == "--memory" || arg == "--cache-limit") && has_value) {
+      if (!parse_mib(argv[++i], arg == "--memory" ? options.memory_mib : options.cache_mib, arg, argv[0])) {
+        exit_code = 2;
+        return false;
+      }
+    } else if (arg == "--cache" && has_value) {
+      options.cache_dir = argv[++i];
     } else if (arg == "--gradescope" && has_value) {
       options.gradescope_path = argv[++i];
     } else if (arg == "--gradescope-format" && has_value) {

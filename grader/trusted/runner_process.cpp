@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "answers.hpp"
+#include "grading_group.hpp"
 #include "student_text.hpp"
 
 namespace opspace::grading {
@@ -26,7 +27,7 @@ namespace {
 Limits runner_limits(double timeout_seconds) {
   Limits l;
 #if !defined(__SANITIZE_ADDRESS__)
-  l.address_space = 1ull << 30;
+  l.address_space = address_space_within_budget(1ull << 30);
 #endif
   l.cpu_seconds = static_cast<unsigned long long>(std::max(60.0, 10.0 * timeout_seconds));
   l.file_size = 1ull << 20;
