@@ -90,27 +90,33 @@ double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Calls `each(i)` for every i below `count`, `jobs` at once: this thread and jobs - 1 others
+// take the next i in turn.
+template <typename Each>
+void at_once(std::size_t count, unsigned jobs, Each each) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < count; i = next++) each(i);
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < std::min<std::size_t>(jobs, count); ++j) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+}
+
 // Builds the runners of `problems`, several at once (one compiler per core).
 std::vector<BuiltRunner> build_all(const std::vector<const Problem*>& problems, const Toolchain& toolchain,
                                    const GraderOptions& options, const BuildSettings& settings) {
   std::vector<BuiltRunner> built(problems.size());
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i = next++; i < problems.size(); i = next++) {
-      const std::string file = file_of(problems[i]->key);
-      try {
-        built[i] = build_runner(toolchain, problems[i]->key, options.exercises + "/" + file, "exercises/" + file, settings);
-      } catch (const std::exception& e) {
-        built[i].error = std::string("the grader could not build the runner: ") + e.what();
-        built[i].fault = Fault::grader;
-      }
+  at_once(problems.size(), std::max(1u, std::thread::hardware_concurrency()), [&](std::size_t i) {
+    const std::string file = file_of(problems[i]->key);
+    try {
+      built[i] = build_runner(toolchain, problems[i]->key, options.exercises + "/" + file, "exercises/" + file, settings);
+    } catch (const std::exception& e) {
+      built[i].error = std::string("the grader could not build the runner: ") + e.what();
+      built[i].fault = Fault::grader;
     }
-  };
-  const unsigned jobs = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), static_cast<unsigned>(problems.size())));
-  std::vector<std::thread> threads;
-  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(work);
-  work();
-  for (std::thread& t : threads) t.join();
+  });
   return built;
 }
 
@@ -219,6 +225,35 @@ ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, co
   return out;
 }
 
+// One problem's grade, and the protections of its runner if one started.
+struct Graded {
+  ProblemResult result;
+  Protections protections;
+  bool started = false;
+};
+
+// Grades `chosen`, `jobs` problems at once: each has its own runner, and its tests run in turn
+// as before, so the results, kept in the problems' order, are those of one problem at a time.
+std::vector<Graded> grade_all(const std::vector<const Problem*>& chosen, const std::vector<BuiltRunner>& built,
+                              const std::string& run_dir, const GraderOptions& options, const Account& account,
+                              unsigned jobs) {
+  std::vector<Graded> graded(chosen.size());
+  at_once(chosen.size(), jobs, [&](std::size_t i) {
+    std::cerr << "grading problem " + chosen[i]->key + "...\n";  // one write: threads do not interleave it
+    Graded& g = graded[i];
+    try {
+      g.result = grade_problem(*chosen[i], built[i], run_dir, options, account, g.protections, g.started);
+    } catch (const std::exception& e) {
+      BuiltRunner broken = built[i];
+      broken.ok = false;
+      broken.error = std::string("the grader could not run this problem: ") + e.what();
+      broken.fault = Fault::grader;
+      g.result = not_built(*chosen[i], broken);
+    }
+  });
+  return graded;
+}
+
 }  // namespace
 
 int grader_main(int argc, char** argv, const std::string& default_exercises) {
@@ -323,21 +358,18 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   const std::string run_dir = run_folder->path();
   chmod(run_dir.c_str(), 0755);
-  std::vector<ProblemResult> results;
-  Protections protections;
-  bool started = false;
+  const unsigned jobs = options.jobs > 0 ? options.jobs : jobs_by_default(options.isolate && account.uid != 0);
+  if (jobs > 1 && chosen.size() > 1)
+    std::cerr << "grading " << std::min<std::size_t>(jobs, chosen.size()) << " problems at a time\n";
   const auto grading_start = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < chosen.size(); ++i) {
-    std::cerr << "grading problem " << chosen[i]->key << "...\n";
-    try {
-      results.push_back(grade_problem(*chosen[i], built[i], run_dir, options, account, protections, started));
-    } catch (const std::exception& e) {
-      BuiltRunner broken = built[i];
-      broken.ok = false;
-      broken.error = std::string("the grader could not run this problem: ") + e.what();
-      broken.fault = Fault::grader;
-      results.push_back(not_built(*chosen[i], broken));
-    }
+  std::vector<Graded> graded = grade_all(chosen, built, run_dir, options, account, jobs);
+  std::vector<ProblemResult> results;
+  Protections protections;  // the first problem's, in the report's order, whose runner started
+  bool started = false;
+  for (Graded& g : graded) {
+    results.push_back(std::move(g.result));
+    if (g.started && !started) protections = g.protections;
+    started |= g.started;
   }
   run_folder.reset();
   kill_account(account);

@@ -1,7 +1,9 @@
 // hw2-grade's command line (docs/grader.md): the options, their checks and the usage text.
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <thread>
 
 #include "grader.hpp"
 #include "suite.hpp"
@@ -9,6 +11,10 @@
 namespace opspace::grading {
 
 namespace {
+
+// More threads than problems would wait idle: the suite has a handful of problems, 64 is far
+// more than any list holds, and refuses a typo of thousands.
+constexpr unsigned long kMaxJobs = 64;
 
 bool is_problem(const std::string& key) {
   for (const Problem& p : graded_suite())
@@ -56,7 +62,7 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
       << "          [--gradescope FILE] [--junit FILE] [--html FILE] [--hidden TEXT]... [--sandbox-user NAME]\n"
       << "          [--unprotected] [--hidden-visibility WHEN] [--gradescope-format FORMAT] [--no-isolation]\n"
-      << "          [--memory MIB] [--cache DIR] [--cache-limit MIB]\n"
+      << "          [--memory MIB] [--cache DIR] [--cache-limit MIB] [--jobs N]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
   for (const Problem& p : graded_suite()) {
@@ -92,10 +98,16 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "                 runners are removed past it when a grading ends\n"
       << "  --check-sandbox say whether the sandbox holds whole here, and grade nothing\n"
       << "                 (exit 0 if it does, 3 if not)\n"
+      << "  --jobs         grade N problems at once, each with its own runner (default: one per\n"
+      << "                 core, or one as root, where the runners share one account's process limit)\n"
       << "  --no-isolation run the student's code without the sandbox (debugging only)\n"
       << "Exit code 0 whenever grading ran, whatever the score; 3 when it refused to run code\n"
       << "where the sandbox cannot be built (see --unprotected).\n";
   return code;
+}
+
+unsigned jobs_by_default(bool shared_account) {
+  return shared_account ? 1u : std::max(1u, std::thread::hardware_concurrency());
 }
 
 double timeout_of(const GraderOptions& options, const std::string& key) {
@@ -162,6 +174,16 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
         exit_code = 2;
         return false;
       }
+    } else if (arg == "--jobs" && has_value) {
+      char* end = nullptr;
+      const std::string text = argv[++i];
+      const unsigned long jobs = std::strtoul(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || text[0] == '-' || jobs == 0 || jobs > kMaxJobs) {
+        std::cerr << argv[0] << ": --jobs needs a whole number from 1 to " << kMaxJobs << ", not '" << text << "'\n";
+        exit_code = 2;
+        return false;
+      }
+      options.jobs = static_cast<unsigned>(jobs);
     } else if (arg == "--sandbox-user" && has_value) {
       options.user = argv[++i];
     } else if (arg == "--check-sandbox") {
