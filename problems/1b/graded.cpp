@@ -11,10 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
 #include <memory>
 
-#include "law_pin.hpp"
+#include "pinned_run.hpp"
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
@@ -94,33 +93,20 @@ void law(Part part, unsigned seed, const std::string& meaning, const Hw2Api& api
   }
 }
 
-// A closed-loop run of one part, with the pin of its law: the first tick, if any, at which the
-// torque was not expected_torque() at that tick's State and Goal.
-struct Run {
-  p1b::Result result;
-  LawPin pin{kLawTol};
-};
-
-// The closed-loop runs, shared by the behaviour tests (each costs ~1 s), cached per
-// implementation (Hw2Api::identity): the suite's own tests grade several in turn.
+// A closed-loop run of one part (~1 s), with the pin of its law: the ticks, if any, at which
+// the torque was not expected_torque() at that tick's State and Goal (pinned_run.hpp).
+using Run = PinnedRun<p1b::Result>;
 const Run& run(const Hw2Api& api, Part part) {
-  static std::map<std::pair<std::uint64_t, int>, Run> cache;
-  const auto key = std::make_pair(api.identity, static_cast<int>(part));
-  auto it = cache.find(key);
-  if (it == cache.end()) {
+  return pinned_run<p1b::Result>(api.identity, static_cast<int>(part), kLawTol, [&api, part](LawPin& pin) {
     scenarios::RunOptions options;
     options.duration = scenarios::p1b::Scenario::kGradedDuration;  // as hw2-p1 --test replays it
-    Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
-    const auto pinned = [control = api.p1b.control, &pin = made.pin](Part p, const hw2::p1b::State& s,
-                                                                     const hw2::p1b::Goal& goal) {
+    const auto pinned = [control = api.p1b.control, &pin](Part p, const hw2::p1b::State& s, const hw2::p1b::Goal& goal) {
       const Vector6d tau = control(p, s, goal);
       pin.see(s.t, expected_torque(p, s, goal), tau);
       return tau;
     };
-    made.result = p1b::run(part, pinned, options);
-    it = cache.emplace(key, std::move(made)).first;
-  }
-  return it->second;
+    return p1b::run(part, pinned, options);
+  });
 }
 
 // The reference's run of `part`: the problem set's law (the oracles) in the same scenario.

@@ -15,9 +15,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <map>
 
-#include "law_pin.hpp"
+#include "pinned_run.hpp"
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
@@ -141,31 +140,19 @@ void law(const Hw2Api& api, Check& check) {
 // expected_torque() at that tick's State and Goal. The run's feed-forward xddot_d is the
 // problem set's (the grader's closed forms), not the student's 2(a): 2(a) has its own test, so
 // a wrong 2(a) costs that test alone and cannot be answered differently during a run.
-struct Run {
-  p2::Result result;
-  LawPin pin{kLawTol};
-};
-
-// The closed-loop runs, shared by the behaviour tests (each costs ~0.6 s), cached per
-// implementation (Hw2Api::identity): the suite's own tests grade several in turn.
+// The run costs ~0.6 s (pinned_run.hpp).
+using Run = PinnedRun<p2::Result>;
 const Run& run(const Hw2Api& api) {
-  static std::map<std::uint64_t, Run> cache;
-  const auto key = api.identity;
-  auto it = cache.find(key);
-  if (it == cache.end()) {
+  return pinned_run<p2::Result>(api.identity, 0, kLawTol, [&api](LawPin& pin) {
     scenarios::RunOptions options;
     options.duration = scenarios::p2::Scenario::kGradedDuration;  // two periods: the drift test compares them
-    Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
-    const auto pinned = [control = api.p2.control, &pin = made.pin](const hw2::p2::State& s,
-                                                                    const hw2::p2::Goal& goal) {
+    const auto pinned = [control = api.p2.control, &pin](const hw2::p2::State& s, const hw2::p2::Goal& goal) {
       const Vector7d tau = control(s, goal);
       pin.see(s.t, expected_torque(s, goal), tau);
       return tau;
     };
-    made.result = p2::run(pinned, problem_set_xddot_d, options);
-    it = cache.emplace(key, std::move(made)).first;
-  }
-  return it->second;
+    return p2::run(pinned, problem_set_xddot_d, options);
+  });
 }
 
 // The reference's run: the problem set's law (the oracles) in the same scenario.

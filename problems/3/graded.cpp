@@ -12,9 +12,8 @@
 
 #include <cmath>
 #include <limits>
-#include <map>
 
-#include "law_pin.hpp"
+#include "pinned_run.hpp"
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
@@ -96,32 +95,20 @@ void law(const Hw2Api& api, Check& check) {
   }
 }
 
-// The closed-loop run with the pin of its law: the first tick, if any, at which the torque was
-// not expected_torque() at that tick's State and Goal.
-struct Run {
-  p3::Result result;
-  LawPin pin{kLawTol};
-};
-
-// The closed-loop runs, shared by the behaviour tests, cached per
-// implementation (Hw2Api::identity): the suite's own tests grade several in turn.
+// The closed-loop run with the pin of its law: the ticks, if any, at which the torque was not
+// expected_torque() at that tick's State and Goal (pinned_run.hpp).
+using Run = PinnedRun<p3::Result>;
 const Run& run(const Hw2Api& api) {
-  static std::map<std::uint64_t, Run> cache;
-  auto it = cache.find(api.identity);
-  if (it == cache.end()) {
+  return pinned_run<p3::Result>(api.identity, 0, kLawTol, [&api](LawPin& pin) {
     scenarios::RunOptions options;
     options.duration = scenarios::p3::Scenario::kGradedDuration;  // as hw2-p3 --test replays it
-    Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
-    const auto pinned = [control = api.p3.control, &pin = made.pin](const hw2::p3::State& s,
-                                                                    const hw2::p3::Goal& goal) {
+    const auto pinned = [control = api.p3.control, &pin](const hw2::p3::State& s, const hw2::p3::Goal& goal) {
       const Vector7d tau = control(s, goal);
       pin.see(s.t, expected_torque(s, goal), tau);
       return tau;
     };
-    made.result = p3::run(pinned, options);
-    it = cache.emplace(api.identity, std::move(made)).first;
-  }
-  return it->second;
+    return p3::run(pinned, options);
+  });
 }
 
 // The reference's run: the problem set's law (the oracles) in the same scenario.

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <map>
 
-#include "law_pin.hpp"
+#include "pinned_run.hpp"
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
@@ -277,32 +277,20 @@ void law(const Hw2Api& api, Check& check) {
   }
 }
 
-// A closed-loop run with the pin of its law: the first tick, if any, at which the torque was
-// not expected_torque() at that tick's State and Goal.
-struct Run {
-  p4::Result result;
-  LawPin pin{kLawTol};
-};
-
-// The closed-loop runs (each ~0.1 s), cached per implementation (Hw2Api::identity) and target.
+// A closed-loop run toward one target (~0.1 s), with the pin of its law: the ticks, if any, at
+// which the torque was not expected_torque() at that tick's State and Goal (pinned_run.hpp).
+using Run = PinnedRun<p4::Result>;
 const Run& run(const Hw2Api& api, Target target) {
-  static std::map<std::pair<std::uint64_t, int>, Run> cache;
-  const auto key = std::make_pair(api.identity, static_cast<int>(target));
-  auto it = cache.find(key);
-  if (it == cache.end()) {
+  return pinned_run<p4::Result>(api.identity, static_cast<int>(target), kLawTol, [&api, target](LawPin& pin) {
     scenarios::RunOptions options;
     options.duration = scenarios::p4::Scenario::kGradedDuration;  // as hw2-p4 --test replays it
-    Run made;  // cached only once the run is over: a runner that fails during it costs this test alone
-    const auto pinned = [control = api.p4.control, &pin = made.pin](Target aim, const hw2::p4::State& s,
-                                                                    const hw2::p4::Goal& goal) {
+    const auto pinned = [control = api.p4.control, &pin](Target aim, const hw2::p4::State& s, const hw2::p4::Goal& goal) {
       const Eigen::Vector3d tau = control(aim, s, goal);
       pin.see(s.t, expected_torque(aim, s, goal), tau);
       return tau;
     };
-    made.result = p4::run(target, pinned, options);
-    it = cache.emplace(key, std::move(made)).first;
-  }
-  return it->second;
+    return p4::run(target, pinned, options);
+  });
 }
 
 const p4::Result& run_plain(Target target) {
