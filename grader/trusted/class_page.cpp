@@ -242,7 +242,7 @@ void run_figure(std::ostream& out, const std::string& test, const std::string& s
   groups.emplace_back("failed, no known mistake named", kUnnamed);
   groups.emplace_back("passed", kPassed);
   out << "<figure class=\"class-run\" data-test=\"" << html_text(test) << "\" data-statistic=\"" << html_text(statistic)
-      << "\">\n<h3>" << html_text(test) << "</h3>\n<p>" << html_text(statistic);
+      << "\" data-bound=\"" << (std::isfinite(first.bound) ? 1 : 0) << "\">\n<h3>" << html_text(test) << "</h3>\n<p>" << html_text(statistic);
   if (std::isfinite(first.bound))
     out << "; <span class=\"key bound\">bound</span> " << (first.upper ? "at most " : "at least ")
         << html_text(points(first.bound * first.unit_scale) + " " + first.unit);

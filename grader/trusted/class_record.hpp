@@ -2,7 +2,8 @@
 /// What the class page (class_page.hpp) needs of one graded test, written into results.json as
 /// the test's extra_data, machine-readable: its problem and name, the known mistake named for
 /// it, whether the student's code was interrupted or the grader faulted, and each judged run
-/// (the figures that draw the statistic the test judged or hold its bound): the statistic's two
+/// (the figures that draw the statistic the test judged or hold its bound; else its first
+/// figure, so that every simulated test has one): the statistic's two
 /// values, the bound, and both series (the figure's, at most kFigurePoints points; the
 /// reference's when the grader ran it), each a string of numbers rounded to kRecordDigits
 /// significant digits (a class plot is a few hundred pixels tall), so that a Gradescope export
