@@ -295,6 +295,15 @@ void runs_section(std::ostream& out, const std::vector<ClassStudent>& students, 
   data["runs"] = std::move(figures);
 }
 
+// Every student with their total, linked to their report.
+void students_section(std::ostream& out, const std::vector<ClassStudent>& students, const ClassPageOptions& o) {
+  out << "<section id=\"students\">\n<h2>Every student</h2>\n<p>";
+  for (std::size_t i = 0; i < students.size(); ++i)
+    out << (i ? ", " : "") << student_html(students, i, o) << " " << points(students[i].score) << "/"
+        << points(students[i].max_score);
+  out << "</p>\n</section>\n";
+}
+
 // The data as JSON inside <script type="application/json">: no < > & raw, so that no text can
 // close the element.
 std::string script_json(const Json& data) {
@@ -340,6 +349,7 @@ void write_class_page(std::ostream& out, const std::vector<ClassStudent>& studen
   mistakes_section(out, students, ranked, options, data);
   runs_section(out, students, ranked, data);
   problems_section(out, students, data);
+  students_section(out, students, options);
   out << "<script type=\"application/json\" id=\"class-data\">" << script_json(data) << "</script>\n</body>\n</html>\n";
 }
 

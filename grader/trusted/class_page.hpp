@@ -5,7 +5,8 @@
 /// tests interrupted); then the known mistakes ranked by how many students made them, each with
 /// its students and the tests it cost; per judged run of each simulated test, small multiples:
 /// every student's run over the reference's with the bound, one plot per named mistake in its
-/// colour; per problem the scores' distribution and each test's pass rate. The counts travel
+/// colour; per problem the scores' distribution and each test's pass rate; every student's
+/// total. The counts travel
 /// in a JSON block (id "class-data") and data- attributes that the tests read. Every text the
 /// students' side wrote (their names) is escaped.
 #pragma once

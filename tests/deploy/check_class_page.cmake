@@ -2,12 +2,13 @@ cmake_minimum_required(VERSION 3.22)
 # Checks a class page (grader/trusted/class_page.hpp) and its mistakes.csv on their data, against
 # what a synthetic class was made of (scripts/synthetic-class's manifest):
 #   cmake -DPAGE=class.html -DCSV=mistakes.csv -DMANIFEST=class.manifest "-DMISTAKES=file=mistake;..."
-#         [-DNAMES=name;...] [-DANONYMOUS=ON] -P check_class_page.cmake
+#         [-DNAMES=name;...] [-DANONYMOUS=ON -DFORBIDDEN=text;...] -P check_class_page.cmake
 # MISTAKES maps each file of tests/mutants/ to the known mistake the grader names for it: the
 # page's JSON block (id "class-data") and mistakes.csv must count, for each, exactly the students
 # whose manifest line gives them that file, and name no other mistake (the solutions and the
-# stubs make none: a stub's failures say "not written yet"). With ANONYMOUS, no NAMES may appear
-# on the page in any form (raw, escaped, percent-encoded); without, each must be escaped (no raw <).
+# stubs make none: a stub's failures say "not written yet"). Without ANONYMOUS, each of NAMES is
+# on the page as escaped text and nowhere raw; with it, none of FORBIDDEN (a part of every name,
+# found in it raw, escaped or percent-encoded) is on the page or in the csv.
 
 function(fail message)
   message(FATAL_ERROR "${message}")
@@ -36,7 +37,7 @@ foreach(pair IN LISTS MISTAKES)
   string(SUBSTRING "${pair}" ${eq} -1 mistake)
   set(students "")
   foreach(line IN LISTS manifest)
-    if(line MATCHES "^([^ ]+) [^ ]+ ${file}$")
+    if(line MATCHES "^(.+) [^ ]+ ${file}$")
       list(APPEND students "${CMAKE_MATCH_1}")
     endif()
   endforeach()
@@ -76,22 +77,29 @@ if(NOT csv_count EQUAL expected_rows)
   fail("mistakes.csv has ${csv_count} rows, the class made ${expected_rows} mistakes")
 endif()
 
-foreach(name IN LISTS NAMES)
-  string(REPLACE "<" "&lt;" escaped "${name}")
-  string(REPLACE "<" "%3C" encoded "${name}")
-  if(ANONYMOUS)
-    foreach(form "${name}" "${escaped}" "${encoded}")
-      string(FIND "${page}${csv}" "${form}" found)
-      if(found GREATER -1)
-        fail("the anonymous page or its csv names '${form}'")
-      endif()
-    endforeach()
-  else()
-    string(FIND "${page}" "${name}" found)
-    string(FIND "${page}" "${escaped}" shown)
-    if(shown LESS 0 OR (NOT name STREQUAL escaped AND found GREATER -1))
-      fail("'${name}' is not on the page as escaped text")
+if(ANONYMOUS)
+  # Every name of the class holds one of these (raw, escaped or percent-encoded alike).
+  foreach(token IN LISTS FORBIDDEN)
+    string(FIND "${page}${csv}" "${token}" found)
+    if(found GREATER -1)
+      fail("the anonymous page or its csv holds '${token}', a part of a student's name")
     endif()
+  endforeach()
+endif()
+foreach(name IN LISTS NAMES)
+  if(ANONYMOUS)
+    break()
+  endif()
+  # As html_text() writes an element's text: & < > " ' escaped.
+  string(REPLACE "&" "&amp;" escaped "${name}")
+  string(REPLACE "<" "&lt;" escaped "${escaped}")
+  string(REPLACE ">" "&gt;" escaped "${escaped}")
+  string(REPLACE "\"" "&quot;" escaped "${escaped}")
+  string(REPLACE "'" "&#39;" escaped "${escaped}")
+  string(FIND "${page}" "${name}" found)
+  string(FIND "${page}" ">${escaped}<" shown)
+  if(shown LESS 0 OR (NOT name STREQUAL escaped AND found GREATER -1))
+    fail("'${name}' is not on the page as escaped text")
   endif()
 endforeach()
 message(STATUS "ok: ${named} mistakes counted as the class made them, the names checked")
