@@ -223,7 +223,7 @@ std::string svg_small_multiple(const RunFigure& frame, const std::vector<SmallCu
                                double height) {
   const double t_end = end_time(frame);
   const Range y = y_range(frame);
-  const Box box{width, height, 40, 6, 6, 24};
+  const Box box{width, height, 40, 6, 6, 30};
   std::ostringstream out;
   plot_open(out, frame, y, t_end, box, 4, "9");
   // Whole pixels: a curve of a few hundred points in a plot of a few hundred pixels.
