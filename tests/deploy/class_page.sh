@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The class page (issue 49), from one regrade of a small synthetic class: scripts/synthetic-class
-# 12 7 writes the reference, the stubs, each of the six files of tests/mutants/ alone in the
+# --shared-files 12 7 writes the reference, the stubs, each of the six files of tests/mutants/ alone in the
 # reference and four random mixes (seed 7: every mutant made by at least one student, three
 # of them by two or three); the reference's folder is renamed "<script>alert(1)" and the
 # stubs' "<img src=x onerror=alert(2)>" (a name is the student's text). Then:
@@ -22,7 +22,7 @@ if ! opspace_stubs_untouched "$repo/exercises"; then
 fi
 rm -rf "$work"
 mkdir -p "$work"
-bash "$repo/scripts/synthetic-class" "$work/in" 12 7 "$work/manifest"
+bash "$repo/scripts/synthetic-class" --shared-files "$work/in" 12 7 "$work/manifest"
 script='<script>alert(1)' img='<img src=x onerror=alert(2)>'
 mv "$work/in/learner-001" "$work/in/$script"
 mv "$work/in/learner-002" "$work/in/$img"
