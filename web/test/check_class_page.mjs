@@ -7,7 +7,8 @@
 // has a figure of small multiples whose every plot draws at least one student's run, the
 // reference's run and the bound (where the run has one), and the mistakes table has a row per
 // mistake of the page's data; it opened within 2 s (the issue's goal; the time is printed). The
-// screenshot is of the page's top. 1: a check failed; 77: no Chromium.
+// screenshot is of the mistakes table and the first three judged runs' plots. 1: a check
+// failed; 77: no Chromium.
 import { pathToFileURL } from 'node:url';
 import { checker, launch, openPage } from './chromium.mjs';
 
@@ -54,7 +55,13 @@ try {
   check(rows === data.mistakes.length && rows > 0, `${rows} rows of known mistakes, as in the data (${data.mistakes.length})`);
   check(await page.evaluate(() => window.__alerts) === 0, 'no script ran');
   check(errors.length === 0, `no console error or refused request${errors.length ? `: ${errors.join('; ')}` : ''}`);
-  await page.screenshot({ path: screenshot });
+  // The mistakes ranked, then the first simulated tests' plots: what an instructor reads first.
+  const top = await page.$eval('#mistakes', (e) => e.getBoundingClientRect().top + window.scrollY);
+  const bottom = await page.$$eval('figure.class-run', (fs) => {
+    const f = fs[Math.min(2, fs.length - 1)];
+    return f ? f.getBoundingClientRect().bottom + window.scrollY : 1000;
+  });
+  await page.screenshot({ path: screenshot, fullPage: true, clip: { x: 0, y: top, width: 1400, height: Math.max(200, bottom - top) } });
 } finally {
   await browser.close();
 }
