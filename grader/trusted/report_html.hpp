@@ -37,7 +37,7 @@ struct SmallCurve {
 /// multiple: `frame` gives the quantity, unit, bound, unjudged start and the reference's run
 /// (drawn over the curves, blue), and its `student` series the values the y axis must hold (every
 /// run of every small multiple of the figure, so that they share one scale). Each curve is a
-/// polyline of class "run" with data-students.
+/// path of class "run" with data-students, in whole pixels.
 std::string svg_small_multiple(const RunFigure& frame, const std::vector<SmallCurve>& curves, double width,
                                double height);
 

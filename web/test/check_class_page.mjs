@@ -38,7 +38,7 @@ try {
     statistic: f.dataset.statistic,
     bounded: f.dataset.bound === '1',
     panels: [...f.querySelectorAll('.panel')].map((p) => ({
-      runs: p.querySelectorAll('svg polyline.run').length,
+      runs: p.querySelectorAll('svg path.run').length,
       reference: p.querySelectorAll('svg polyline.reference').length,
       bound: p.querySelectorAll('svg line.bound').length,
       width: p.querySelector('svg') ? p.querySelector('svg').getBoundingClientRect().width : 0,
