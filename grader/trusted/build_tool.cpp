@@ -9,6 +9,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "grading_group.hpp"
 #include "sandbox.hpp"
 
 namespace opspace::grading {
@@ -26,8 +27,9 @@ ToolResult run_tool(const std::vector<std::string>& argv, const std::string& wor
   spec.account = settings.account;
   spec.isolate = settings.isolate;
   // A compiler on one exercise file: well under 2 GiB and a minute on a laptop; a template
-  // explosion in a student's file stops at these.
-  spec.limits.address_space = 4ull << 30;
+  // explosion in a student's file stops at these, or at the grading's budget where no memory
+  // group holds it (grading_group.hpp).
+  spec.limits.address_space = address_space_within_budget(4ull << 30);
   spec.limits.cpu_seconds = static_cast<unsigned long long>(settings.timeout);
   spec.limits.file_size = 256ull << 20;
   spec.limits.open_files = 256;

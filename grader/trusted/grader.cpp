@@ -15,13 +15,14 @@
 #include <random>
 #include <thread>
 
-#include "cpu_share.hpp"
+#include "grading_group.hpp"
 #include "interrupt.hpp"
 #include "mistakes.hpp"
 #include "reference_runs.hpp"
 #include "remote_api.hpp"
 #include "report_html.hpp"
 #include "runner_build.hpp"
+#include "runner_cache.hpp"
 #include "runner_process.hpp"
 #include "sandbox.hpp"
 #include "student_text.hpp"
@@ -89,28 +90,44 @@ double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Calls `each(i)` for every i below `count`, `jobs` at once: this thread and jobs - 1 others
+// take the next i in turn.
+template <typename Each>
+void at_once(std::size_t count, unsigned jobs, Each each) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < count; i = next++) each(i);
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < std::min<std::size_t>(jobs, count); ++j) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+}
+
 // Builds the runners of `problems`, several at once (one compiler per core).
 std::vector<BuiltRunner> build_all(const std::vector<const Problem*>& problems, const Toolchain& toolchain,
                                    const GraderOptions& options, const BuildSettings& settings) {
   std::vector<BuiltRunner> built(problems.size());
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i = next++; i < problems.size(); i = next++) {
-      const std::string file = file_of(problems[i]->key);
-      try {
-        built[i] = build_runner(toolchain, problems[i]->key, options.exercises + "/" + file, "exercises/" + file, settings);
-      } catch (const std::exception& e) {
-        built[i].error = std::string("the grader could not build the runner: ") + e.what();
-        built[i].fault = Fault::grader;
-      }
+  at_once(problems.size(), std::max(1u, std::thread::hardware_concurrency()), [&](std::size_t i) {
+    const std::string file = file_of(problems[i]->key);
+    try {
+      built[i] = build_runner(toolchain, problems[i]->key, options.exercises + "/" + file, "exercises/" + file, settings);
+    } catch (const std::exception& e) {
+      built[i].error = std::string("the grader could not build the runner: ") + e.what();
+      built[i].fault = Fault::grader;
     }
-  };
-  const unsigned jobs = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), static_cast<unsigned>(problems.size())));
-  std::vector<std::thread> threads;
-  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(work);
-  work();
-  for (std::thread& t : threads) t.join();
+  });
   return built;
+}
+
+// What this grading may use: --memory, else the machine's; processes for the builds running
+// at once (one per core, each under its account's 64, build_tool.cpp) and as many runners (16
+// each, runner_process.cpp).
+GradingBudget grading_budget(const GraderOptions& options) {
+  GradingBudget budget;
+  budget.memory_bytes = options.memory_mib > 0 ? options.memory_mib << 20 : machine_memory();
+  budget.processes = (64 + 16) * static_cast<unsigned long long>(std::max(1u, std::thread::hardware_concurrency()));
+  return budget;
 }
 
 // A problem whose runner could not be built: every test 0, with the reason and no hint.
@@ -208,6 +225,35 @@ ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, co
   return out;
 }
 
+// One problem's grade, and the protections of its runner if one started.
+struct Graded {
+  ProblemResult result;
+  Protections protections;
+  bool started = false;
+};
+
+// Grades `chosen`, `jobs` problems at once: each has its own runner, and its tests run in turn
+// as before, so the results, kept in the problems' order, are those of one problem at a time.
+std::vector<Graded> grade_all(const std::vector<const Problem*>& chosen, const std::vector<BuiltRunner>& built,
+                              const std::string& run_dir, const GraderOptions& options, const Account& account,
+                              unsigned jobs) {
+  std::vector<Graded> graded(chosen.size());
+  at_once(chosen.size(), jobs, [&](std::size_t i) {
+    std::cerr << "grading problem " + chosen[i]->key + "...\n";  // one write: threads do not interleave it
+    Graded& g = graded[i];
+    try {
+      g.result = grade_problem(*chosen[i], built[i], run_dir, options, account, g.protections, g.started);
+    } catch (const std::exception& e) {
+      BuiltRunner broken = built[i];
+      broken.ok = false;
+      broken.error = std::string("the grader could not run this problem: ") + e.what();
+      broken.fault = Fault::grader;
+      g.result = not_built(*chosen[i], broken);
+    }
+  });
+  return graded;
+}
+
 }  // namespace
 
 int grader_main(int argc, char** argv, const std::string& default_exercises) {
@@ -222,8 +268,9 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   become_subreaper();
   clean_up_when_interrupted();
-  // Before any child: the gradings running at once then share the CPU by group (cpu_share.hpp).
-  const std::string cpu_group = options.isolate ? join_own_cpu_group() : "";
+  // Before any child: the gradings running at once then share the machine by group
+  // (grading_group.hpp).
+  const GradingGroups groups = options.isolate ? join_grading_groups(grading_budget(options)) : GradingGroups{};
   Account account;
   try {
     account = options.isolate ? grading_account(options.user) : Account{};
@@ -249,8 +296,14 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   if (options.check_sandbox) {
     std::cout << (unprotected.empty() ? "sandbox: complete" : "sandbox: " + unprotected) << "\n"
               << "cpu share: "
-              << (cpu_group.empty() ? "no writable cgroup here: each test's limit counts the runner's CPU time"
-                                    : "a group per grading, " + cpu_group)
+              << (groups.cpu.empty() ? "no writable cgroup here: each test's limit counts the runner's CPU time"
+                                     : "a group per grading, " + groups.cpu)
+              << "\nmemory budget: "
+              << (groups.memory.empty() ? "no writable memory cgroup here: each program's address space is capped"
+                                        : "a group per grading, " + groups.memory)
+              << "\nprocess budget: "
+              << (groups.pids.empty() ? "no writable pids cgroup here: each program's account limits its processes"
+                                      : "a group per grading, " + groups.pids)
               << "\n";
     return unprotected.empty() ? 0 : kExitUnprotected;
   }
@@ -277,14 +330,15 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     return 1;
   }
   // The reference's runs of the figures, kept for every later grading by this grader.
-  set_reference_store(std::string(OPSPACE_GRADING_CACHE) + "/reference-" + toolchain.fingerprint);
+  const std::string cache_dir = options.cache_dir.empty() ? std::string(OPSPACE_GRADING_CACHE) : options.cache_dir;
+  set_reference_store(cache_dir + "/reference-" + toolchain.fingerprint);
   if (!unprotected.empty())
     std::cout << "UNPROTECTED: " << unprotected << ": the code graded ran with this grader's rights\n";
   std::cout << "opspace grader: problem set 2, " << options.exercises << " (seed " << options.seed << ")\n"
             << std::flush;
   const auto start = std::chrono::steady_clock::now();
   std::cerr << "building the runners of " << chosen.size() << " problem(s)...\n";
-  const BuildSettings settings{OPSPACE_GRADING_CACHE, account, options.isolate, 180.0};
+  const BuildSettings settings{cache_dir, account, options.isolate, 180.0};
   const std::vector<BuiltRunner> built = build_all(chosen, toolchain, options, settings);
   const double build_seconds = since(start);
   for (std::size_t i = 0; i < chosen.size(); ++i) {
@@ -304,24 +358,22 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   }
   const std::string run_dir = run_folder->path();
   chmod(run_dir.c_str(), 0755);
-  std::vector<ProblemResult> results;
-  Protections protections;
-  bool started = false;
+  const unsigned jobs = options.jobs > 0 ? options.jobs : jobs_by_default(options.isolate && account.uid != 0);
+  if (jobs > 1 && chosen.size() > 1)
+    std::cerr << "grading " << std::min<std::size_t>(jobs, chosen.size()) << " problems at a time\n";
   const auto grading_start = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < chosen.size(); ++i) {
-    std::cerr << "grading problem " << chosen[i]->key << "...\n";
-    try {
-      results.push_back(grade_problem(*chosen[i], built[i], run_dir, options, account, protections, started));
-    } catch (const std::exception& e) {
-      BuiltRunner broken = built[i];
-      broken.ok = false;
-      broken.error = std::string("the grader could not run this problem: ") + e.what();
-      broken.fault = Fault::grader;
-      results.push_back(not_built(*chosen[i], broken));
-    }
+  std::vector<Graded> graded = grade_all(chosen, built, run_dir, options, account, jobs);
+  std::vector<ProblemResult> results;
+  Protections protections;  // the first problem's, in the report's order, whose runner started
+  bool started = false;
+  for (Graded& g : graded) {
+    results.push_back(std::move(g.result));
+    if (g.started && !started) protections = g.protections;
+    started |= g.started;
   }
   run_folder.reset();
   kill_account(account);
+  std::cerr << prune_runner_cache(cache_dir, options.cache_mib << 20).line(options.cache_mib << 20) << "\n";
   const double grading_seconds = since(grading_start), seconds = since(start);
   print_report(std::cout, results, options.hidden, options.seed);
   std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,

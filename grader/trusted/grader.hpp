@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "report.hpp"
+#include "runner_cache.hpp"
 
 namespace opspace::grading {
 
@@ -32,6 +33,10 @@ struct GraderOptions {
   std::string user;                 ///< when root: a named account that runs student code (empty: the grading's own)
   bool allow_unprotected = false;   ///< grade even where the sandbox is incomplete (--unprotected)
   bool check_sandbox = false;       ///< only say whether the sandbox holds whole (--check-sandbox)
+  unsigned long long memory_mib = 0;  ///< the grading's memory budget (--memory; 0: the machine's)
+  unsigned long long cache_mib = kDefaultCacheMib;  ///< the runners' cache bound (--cache-limit)
+  std::string cache_dir;            ///< the runners' cache (--cache; empty: the build's)
+  unsigned jobs = 0;                ///< problems graded at once (--jobs); 0: jobs_by_default()
 };
 
 /// Reads hw2-grade's command line into `options` (whose timeout is the default on entry).
@@ -44,6 +49,12 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
 
 /// The time limit of each test of problem `key`: its own (--timeout KEY=SECONDS), else --timeout's.
 double timeout_of(const GraderOptions& options, const std::string& key);
+
+/// How many problems are graded at once without --jobs: one per core where the runners share
+/// no process limit (`shared_account` false: the grader is not root, or the sandbox is off),
+/// else one. As root a grading's runners all run as its account, under one RLIMIT_NPROC that a
+/// runner's threads could fill while another problem's runner starts (docs/grader.md).
+unsigned jobs_by_default(bool shared_account);
 
 /// What results.json hides, and the grader's record it carries (docs/grader.md).
 struct GradescopeSettings {

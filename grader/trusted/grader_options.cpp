@@ -1,7 +1,9 @@
 // hw2-grade's command line (docs/grader.md): the options, their checks and the usage text.
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <thread>
 
 #include "grader.hpp"
 #include "suite.hpp"
@@ -9,6 +11,10 @@
 namespace opspace::grading {
 
 namespace {
+
+// More threads than problems would wait idle: the suite has a handful of problems, 64 is far
+// more than any list holds, and refuses a typo of thousands.
+constexpr unsigned long kMaxJobs = 64;
 
 bool is_problem(const std::string& key) {
   for (const Problem& p : graded_suite())
@@ -37,12 +43,26 @@ bool parse_timeout(const std::string& text, GraderOptions& options, const char* 
   return true;
 }
 
+// A size in MiB: a whole number from 1 to 2^30 (a petabyte, past any machine).
+bool parse_mib(const std::string& text, unsigned long long& mib, const std::string& option, const char* program) {
+  char* end = nullptr;
+  const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
+  if (text.empty() || text[0] < '0' || text[0] > '9' || *end != '\0' || value == 0 || value > (1ull << 30)) {
+    std::cerr << program << ": " << option << " needs a whole number of MiB from 1 to " << (1ull << 30) << ", not '"
+              << text << "'\n";
+    return false;
+  }
+  mib = value;
+  return true;
+}
+
 }  // namespace
 
 int grader_usage(std::ostream& out, const char* program, double default_timeout, int code) {
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
       << "          [--gradescope FILE] [--junit FILE] [--html FILE] [--hidden TEXT]... [--sandbox-user NAME]\n"
       << "          [--unprotected] [--hidden-visibility WHEN] [--gradescope-format FORMAT] [--no-isolation]\n"
+      << "          [--memory MIB] [--cache DIR] [--cache-limit MIB] [--jobs N]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
   for (const Problem& p : graded_suite()) {
@@ -69,12 +89,25 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "                 grading running at once (default: an account of this grading's own)\n"
       << "  --unprotected  grade even where the sandbox is incomplete (no namespaces): the code\n"
       << "                 graded runs with the grader's rights; for your own files only\n"
+      << "  --memory       this grading's memory budget for all it starts (compilers, runners,\n"
+      << "                 their /tmp), in MiB (default: the machine's; scripts/regrade divides it\n"
+      << "                 between the gradings it runs at once)\n"
+      << "  --cache        the runners' cache folder (default: the build's grading-cache)\n"
+      << "  --cache-limit  the runners' cache bound in MiB (default " << kDefaultCacheMib
+      << "): the least recently used\n"
+      << "                 runners are removed past it when a grading ends\n"
       << "  --check-sandbox say whether the sandbox holds whole here, and grade nothing\n"
       << "                 (exit 0 if it does, 3 if not)\n"
+      << "  --jobs         grade N problems at once, each with its own runner (default: one per\n"
+      << "                 core, or one as root, where the runners share one account's process limit)\n"
       << "  --no-isolation run the student's code without the sandbox (debugging only)\n"
       << "Exit code 0 whenever grading ran, whatever the score; 3 when it refused to run code\n"
       << "where the sandbox cannot be built (see --unprotected).\n";
   return code;
+}
+
+unsigned jobs_by_default(bool shared_account) {
+  return shared_account ? 1u : std::max(1u, std::thread::hardware_concurrency());
 }
 
 double timeout_of(const GraderOptions& options, const std::string& key) {
@@ -109,6 +142,13 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
         exit_code = 2;
         return false;
       }
+    } else if ((arg == "--memory" || arg == "--cache-limit") && has_value) {
+      if (!parse_mib(argv[++i], arg == "--memory" ? options.memory_mib : options.cache_mib, arg, argv[0])) {
+        exit_code = 2;
+        return false;
+      }
+    } else if (arg == "--cache" && has_value) {
+      options.cache_dir = argv[++i];
     } else if (arg == "--gradescope" && has_value) {
       options.gradescope_path = argv[++i];
     } else if (arg == "--gradescope-format" && has_value) {
@@ -134,6 +174,16 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
         exit_code = 2;
         return false;
       }
+    } else if (arg == "--jobs" && has_value) {
+      char* end = nullptr;
+      const std::string text = argv[++i];
+      const unsigned long jobs = std::strtoul(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || text[0] == '-' || jobs == 0 || jobs > kMaxJobs) {
+        std::cerr << argv[0] << ": --jobs needs a whole number from 1 to " << kMaxJobs << ", not '" << text << "'\n";
+        exit_code = 2;
+        return false;
+      }
+      options.jobs = static_cast<unsigned>(jobs);
     } else if (arg == "--sandbox-user" && has_value) {
       options.user = argv[++i];
     } else if (arg == "--check-sandbox") {

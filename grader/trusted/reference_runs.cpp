@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <sstream>
 
 #include "sha256.hpp"
@@ -15,6 +16,13 @@
 namespace opspace::grading {
 
 namespace {
+
+// Problems graded at once (grader.cpp) share the kept series and the store: every look-up and
+// insertion holds this lock; a run being made does not, so two problems' runs overlap.
+std::mutex& kept_lock() {
+  static std::mutex lock;
+  return lock;
+}
 
 std::map<std::string, Series>& kept() {
   static std::map<std::string, Series> series;
@@ -70,7 +78,8 @@ void write_series(const std::string& path, const Series& s) {
   if (ec) std::filesystem::remove(temporary, ec);
 }
 
-// The series `key` from this process or the store; null if neither has it.
+// The series `key` from this process or the store; null if neither has it (call with the lock
+// held: a std::map's elements stay where they are as others are added).
 const Series* known(const std::string& key) {
   auto it = kept().find(key);
   if (it != kept().end()) return &it->second;
@@ -88,13 +97,21 @@ void set_reference_store(const std::string& folder) {
   store_folder() = ec ? "" : folder;
 }
 
-bool reference_known(const std::string& key) { return known(key) != nullptr; }
+bool reference_known(const std::string& key) {
+  const std::lock_guard<std::mutex> hold(kept_lock());
+  return known(key) != nullptr;
+}
 
 const Series& reference_series(const std::string& key, const std::function<Series()>& make) {
-  if (const Series* s = known(key)) return *s;
-  const Series& made = kept().emplace(key, make()).first->second;
-  if (!store_folder().empty() && !made.t.empty()) write_series(file_of(key), made);
-  return made;
+  {
+    const std::lock_guard<std::mutex> hold(kept_lock());
+    if (const Series* s = known(key)) return *s;
+  }
+  Series run = make();  // unlocked: it may ask for another series (reference_statistic's do)
+  const std::lock_guard<std::mutex> hold(kept_lock());
+  const auto [it, added] = kept().emplace(key, std::move(run));
+  if (added && !store_folder().empty() && !it->second.t.empty()) write_series(file_of(key), it->second);
+  return it->second;
 }
 
 double reference_statistic(const std::string& key, const std::function<double()>& make) {

@@ -1,5 +1,7 @@
 #include "remote_api.hpp"
 
+#include <atomic>
+
 #include "functions.hpp"
 #include "protocol/codec.hpp"
 
@@ -31,7 +33,7 @@ void bind(std::function<R(A...)>& slot, RunnerProcess& runner, Function function
 }  // namespace
 
 Hw2Api remote_api(const std::string& key, RunnerProcess& runner) {
-  static std::uint64_t next_identity = 1000;
+  static std::atomic<std::uint64_t> next_identity{1000};  // problems are graded at once (grader.cpp)
   Hw2Api api{};
   api.identity = ++next_identity;
   for_each_function(api, [&](Function function, auto& slot) {

@@ -16,8 +16,10 @@
 #include "build_tool.hpp"
 #include "compiler_messages.hpp"
 #include "elf_files.hpp"
+#include "grading_group.hpp"
 #include "interrupt.hpp"
 #include "library_answers.hpp"
+#include "runner_cache.hpp"
 #include "runner_process.hpp"
 #include "sandbox.hpp"
 #include "sha256.hpp"
@@ -236,13 +238,22 @@ bool compile_stage(const Toolchain& toolchain, const Stages& s, const std::strin
   std::vector<std::string> compile;
   for (const std::string& arg : toolchain.compile) compile.push_back(s.headers.rewrite(arg));
   compile.insert(compile.end(), {"-c", s.source_file, "-o", s.compiled + "/exercise.o", "-MD", "-MF", s.compiled + "/exercise.d"});
+  const unsigned long long kills = grading_memory_kills();
   const ToolResult cc = run_tool(compile, s.compiled, {s.source, s.headers_dir}, settings, kMaxToolOutput);
   built.warnings = warnings_of(cc.output, s.source_file, shown_as, kMaxWarnings);
   if (cc.timed_out) {
     return stop(built, Fault::submission,
                 "compiling " + shown_as + " took more than " + std::to_string(static_cast<int>(settings.timeout)) + " s");
   }
-  if (!WIFEXITED(cc.status) || WEXITSTATUS(cc.status) != 0) {
+  const bool failed = !WIFEXITED(cc.status) || WEXITSTATUS(cc.status) != 0;
+  if (failed && grading_memory_kills() > kills) {
+    // The kernel stopped a compiler at the grading's budget (grading_group.hpp): one exercise
+    // file compiles in about 270 MB (with the precompiled Eigen).
+    return stop(built, Fault::submission,
+                "compiling " + shown_as + " took more than this grading's memory budget of " +
+                    size_text(grading_memory_group_budget()) + " (the kernel stopped the compiler)");
+  }
+  if (failed) {
     const std::string error = first_error(cc.output, s.source_file, shown_as, s.roots, "compiler");
     return stop(built, Fault::submission,
                 error.empty() ? "the compiler failed on " + shown_as + " (" + describe_wait_status(cc.status) + ")" : error);
@@ -389,9 +400,9 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   if (fs::exists(cached) && load_report(cached + ".report", built)) {
     built.ok = true;
     built.cached = true;
-    built.binary = cached;
     match_oracles(key, built);
     try {
+      built.binary = hold_runner(cached, settings.cache_dir, key);
       built.runtime = runtime_files(cached);
     } catch (const std::exception& e) {
       built = BuiltRunner{};
@@ -421,7 +432,7 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   fs::rename(tmp, cached);
   save_report(cached + ".report", built);
   built.ok = true;
-  built.binary = cached;
+  built.binary = hold_runner(cached, settings.cache_dir, key);
   return built;
 }
 

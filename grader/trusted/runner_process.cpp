@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "answers.hpp"
+#include "grading_group.hpp"
 #include "student_text.hpp"
 
 namespace opspace::grading {
@@ -26,7 +27,7 @@ namespace {
 Limits runner_limits(double timeout_seconds) {
   Limits l;
 #if !defined(__SANITIZE_ADDRESS__)
-  l.address_space = 1ull << 30;
+  l.address_space = address_space_within_budget(1ull << 30);
 #endif
   l.cpu_seconds = static_cast<unsigned long long>(std::max(60.0, 10.0 * timeout_seconds));
   l.file_size = 1ull << 20;
@@ -115,6 +116,7 @@ void RunnerProcess::start() {
   cpu_at_begin_ = 0.0;
   running_ = true;
   ++starts_;
+  memory_kills_ = grading_memory_kills();
 }
 
 void RunnerProcess::stop() {
@@ -145,6 +147,11 @@ std::string RunnerProcess::ended_how() {
   if (WIFEXITED(status)) {
     return "your code ended the program before answering (exit code " + std::to_string(WEXITSTATUS(status)) +
            ": an exit() call?)";
+  }
+  if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL && grading_memory_kills() > memory_kills_) {
+    // The kernel stopped it at the grading's budget (grading_group.hpp), not a limit of its own.
+    return "your code used more than this grading's memory budget of " +
+           std::to_string(grading_memory_group_budget() >> 20) + " MiB (the kernel stopped it)";
   }
   return "your code " + describe_wait_status(status);
 }

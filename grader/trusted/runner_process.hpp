@@ -112,6 +112,7 @@ class RunnerProcess {
   Printed printed_;
   Protections protections_;
   int starts_ = 0;
+  unsigned long long memory_kills_ = 0;  ///< the grading's count when it started (grading_group.hpp)
 };
 
 }  // namespace opspace::grading

@@ -22,6 +22,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "grading_group.hpp"
 #include "interrupt.hpp"
 #include "sandbox_plan.hpp"
 #include "sandbox_seccomp.hpp"
@@ -34,6 +35,15 @@ using sandbox_internal::ChildPlan;
 using sandbox_internal::forget;
 using sandbox_internal::live_programs;
 using sandbox_internal::programs_lock;
+
+// A child that will not start: killed, reaped and forgotten, its pipes closed (-1: none).
+void abandon(pid_t pid, int error_fd, int filter_fd) {
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  forget(pid);
+  close(error_fd);
+  if (filter_fd >= 0) close(filter_fd);
+}
 
 // One try at starting the program with namespace `flags`: its pid, or -1 with `why`.
 pid_t attempt(ChildPlan& plan, const SandboxSpec& spec, unsigned long flags, std::string& why) {
@@ -71,6 +81,15 @@ pid_t attempt(ChildPlan& plan, const SandboxSpec& spec, unsigned long flags, std
     why = std::string("start a process: ") + std::strerror(clone_error);
     return -1;
   }
+  // Into the grading's memory and process budget before it runs anything of its own (it waits
+  // for its filter; grading_group.hpp).
+  try {
+    admit_to_grading_groups(static_cast<pid_t>(pid));
+  } catch (const std::exception& e) {
+    abandon(static_cast<pid_t>(pid), error_pipe[0], plan.seccomp ? filter_pipe[1] : -1);
+    why = e.what();
+    return -1;
+  }
   if (plan.seccomp) {
     // The child's pid as it sees it: 1, the init of its new PID namespace, or the one clone gave.
     std::string failed;
@@ -91,10 +110,7 @@ pid_t attempt(ChildPlan& plan, const SandboxSpec& spec, unsigned long flags, std
     }
     close(filter_pipe[1]);
     if (!failed.empty()) {
-      kill(static_cast<pid_t>(pid), SIGKILL);
-      waitpid(static_cast<pid_t>(pid), nullptr, 0);
-      forget(static_cast<pid_t>(pid));
-      close(error_pipe[0]);
+      abandon(static_cast<pid_t>(pid), error_pipe[0], -1);
       why = failed;
       return -1;
     }

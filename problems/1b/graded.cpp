@@ -129,7 +129,7 @@ const p1b::Result& reference_run(Part part) {
   return run(oracles, part).result;
 }
 
-// The series the checks read (scenarios/graded.hpp, which the programs' --test replay shares).
+// The series the checks read (problems/1b/scenario.hpp, which the programs' --test replay shares).
 using p1b::q2_error;
 using p1b::tip_error;
 

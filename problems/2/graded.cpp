@@ -174,7 +174,7 @@ const p2::Result& reference_run() {
   return run(oracles).result;
 }
 
-// The series the checks read (scenarios/graded.hpp, which the programs' --test replay shares).
+// The series the checks read (problems/2/scenario.hpp, which the programs' --test replay shares).
 using p2::lambda_dot_lambda_d;
 using p2::position_error;
 const auto orientation_error_angle = &p2::orientation_angle;

@@ -130,7 +130,7 @@ const p3::Result& reference_run() {
   return run(oracles).result;
 }
 
-// The series the checks read (scenarios/graded.hpp, which the programs' --test replay shares).
+// The series the checks read (problems/3/scenario.hpp, which the programs' --test replay shares).
 using p3::force_error;
 using p3::push;
 using p3::rotation_x_error;

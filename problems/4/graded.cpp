@@ -335,7 +335,7 @@ const p4::Result& reference_run(Target target) {
 }
 
 // The tip's distance to x_d (m), the series whose last 5 mm crossing is the reach time.
-// (scenarios/graded.hpp, which the programs' --test replay shares)
+// (problems/4/scenario.hpp, which the programs' --test replay shares)
 auto tip_error(Target target) {
   return [target](const p4::Sample& s) { return p4::tip_error(target, s); };
 }

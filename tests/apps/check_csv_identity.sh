@@ -28,7 +28,7 @@ same() {
     failures=$((failures + 1))
   fi
 }
-# program NAME ARGS...: runs apps/NAME with ARGS, its outputs in $work/out.
+# program NAME ARGS...: runs the build's program NAME with ARGS, its outputs in $work/out.
 program() {
   local name="$1"
   shift

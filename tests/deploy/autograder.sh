@@ -16,8 +16,8 @@
 # this tree proves. Without ccache it compiles everything.
 # One image per bundle: the set-up ROOT lives in IMAGES/<fingerprint> (default
 # REPO/build/autograder-images), the fingerprint being the SHA-256 of every file of the zip
-# with its path and mode. A second run with the identical bundle (CI's sanitized suite after
-# the release suite, in the same clone) reuses that image, which setup.sh built, proved and
+# with its path and mode. A second run with the identical bundle (the test run again in the
+# same clone: CI's sanitized suite did until issue 50 left it to the release suite) reuses that image, which setup.sh built, proved and
 # locked down in the first run, and grades every submission again; any change to a file of the
 # bundle, setup.sh and the grader options included, makes a new image. AUTOGRADER_TEST_FRESH=1
 # sets up anew regardless.

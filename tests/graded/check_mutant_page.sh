@@ -6,7 +6,7 @@
 #   - figure QUANTITY (a simulated test), read from the figure's data attributes after its
 #     unjudged start, as the picture shows it (SHOWS):
 #       max:   the student's largest value is past the bound, the reference's largest within it
-#              (the figure keeps each stretch's peak, tests/graded/run_figure.hpp, so a test that
+#              (the figure keeps each stretch's peak, grader/suite/run_figure.hpp, so a test that
 #              bounds the largest value reads the same peaks);
 #       apart: every student point is past the bound and every reference point below the
 #              student's lowest: the two curves apart, the bound between or under them. For a

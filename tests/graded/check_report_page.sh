@@ -10,7 +10,8 @@
 #      tip stays at the mm scale (0.7 mm at most on this scenario), the mutant's moves hundreds;
 #   2. the text report names the replay command of that test and ends with "open ...";
 #      running the command on hw2-p1 linked with the same file prints the final tip error the
-#      figure ends with, to 1e-9 m: the same scenario, law and arithmetic (scenarios/graded.hpp);
+#      figure ends with, to 1e-9 m: the same scenario, law and arithmetic
+#      (problems/1b/scenario.hpp);
 #   3. results.json: valid, under 1 MB, no raw < or > in a text, the test tagged with the mistake
 #      the catalogue names and its output holding the run's text table.
 # Seen to fail: with the grader of main ("unknown or incomplete argument '--html'"); with

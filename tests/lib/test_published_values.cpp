@@ -1,13 +1,13 @@
 // The operational-space matrices and the joint-space dynamics against numbers that others
 // published for robots we rebuilt from their parameters, none of them computed by opspace:
 // - sai2-model (github.com/manips-sai-org/sai2-model, the library of the course this problem set
-//   comes from), tests/Tests_SaiModel.cpp at commit 2eaaf63: its robots are rebuilt in
+//   comes from), sai2-model:tests/Tests_SaiModel.cpp at commit 2eaaf63: its robots are rebuilt in
 //   tests/data/sai2/ and its expected matrices are printed to 6 significant digits;
 // - Peter Corke's Robotics Toolbox for Python (github.com/petercorke/robotics-toolbox-python,
-//   tests/test_DHRobot.py at commit a9ed8d4) and for MATLAB (github.com/petercorke/
-//   robotics-toolbox-matlab, unit_test/SerialLinkTest.m at commit bd7a9d7): the Puma 560 in
-//   standard DH (tests/data/puma_dh.urdf) with its motors' reflected inertia Jm G^2, printed to
-//   4 decimals (a few to 6 significant digits).
+//   robotics-toolbox-python:tests/test_DHRobot.py at commit a9ed8d4) and for MATLAB
+//   (github.com/petercorke/robotics-toolbox-matlab, unit_test/SerialLinkTest.m at commit
+//   bd7a9d7): the Puma 560 in standard DH (tests/data/puma_dh.urdf) with its motors' reflected
+//   inertia Jm G^2, printed to 4 decimals (a few to 6 significant digits).
 // The tolerance of each comparison is the published precision: half a unit of the last printed
 // digit (numbers printed to 4 decimals are within 5e-5 of the toolbox's double).
 #include <doctest/doctest.h>

@@ -12,7 +12,7 @@ cmake_minimum_required(VERSION 3.22)
 #   - the report matches EXPECT; neither it nor results.json's texts match FORBID (regular
 #     expressions) or hold a byte sequence of FORBID_BYTES (hexadecimal, ","-separated).
 # Cases with ISOLATED=ON need the sandbox's private file view: skipped (SKIPPED:) without it.
-#   cmake -DGRADER=hw2-grade-sol -DSOLUTIONS=solutions -DCASE=cases/x.cpp [-DTARGET=p1b.cpp]
+#   cmake -DGRADER=hw2-grade-sol -DSOLUTIONS=solutions -DCASE=cases/<case>.cpp [-DTARGET=p1b.cpp]
 #         -DWORK=dir -DREPO=root [-DTIMEOUT=seconds per test, 5] [-DPROBLEM=1b] [-DSCORES=...] [-DEXPECT=...] [-DFORBID=...] [-DFORBID_BYTES=e280a8,ff]
 #         [-DFAULT=...] [-DISOLATED=ON] [-DGRADER_ARGS=--no-isolation] -P run_case.cmake
 # (GRADER_ARGS=--no-isolation turns the sandbox off: then the attacks succeed, which shows

@@ -1,6 +1,6 @@
 // What the live page's modules share: the test hook (window.opspaceLive), speeds, formats.
 
-// The test hook (web/test/check_live.mjs, bench/live/bench_live.mjs).
+// The test hook (web/test/check_live.mjs, web/test/bench_live.mjs).
 export const api = {
   ready: false, stopped: false, frames: 0, lastFrame: null, latencies: [], fps: 0,
   samples: 0, plotDraws: 0, commandErrors: [], lastSent: 0, trace: null, firstFrame: null,

@@ -3,7 +3,7 @@
 /// Each function fills its member of Data and returns a reference to it; none allocates.
 /// Source: R. Featherstone, Rigid Body Dynamics Algorithms, Springer 2008 (RBDA): the
 /// recursive Newton-Euler algorithm of section 5.3 and the composite-rigid-body algorithm of
-/// section 6.2, in the spatial algebra of chapter 2 (lib/src/algorithms/spatial.hpp).
+/// section 6.2, in the spatial algebra of chapter 2 (lib/src/math/spatial.hpp).
 #pragma once
 
 #include <Eigen/Core>
