@@ -9,6 +9,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "class_record.hpp"
 #include "grader.hpp"
 #include "raster.hpp"
 #include "report_html.hpp"
@@ -195,6 +196,7 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
                                                                  : feedback_html(r, settings.seed)},
                            {"output_format", settings.format},
                            {"tags", tags(r)},
+                           {"extra_data", class_record(p, r)},
                            {"visibility", is_hidden(p, r, settings.hidden) ? settings.hidden_as : "visible"}});
     }
   }
@@ -202,8 +204,10 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
   // takes. A test marked after_due_date or after_published keeps the total from the student
   // until then (Gradescope's autograder specification); the output's lines count the tests
   // shown. Every text is "text" (shown as it is, never rendered) and HTML-escaped besides.
-  // extra_data.grader is the grader's own record, for scripts/regrade: the seed of the run and
-  // the tests or problems lost to the grader's own failures (never read from the student's text).
+  // extra_data.grader is the grader's own record, for scripts/regrade: the seed of the run, the
+  // tests or problems lost to the grader's own failures (never read from the student's text) and
+  // whether the code ran without the sandbox; each test's extra_data is the class page's
+  // (class_record.hpp).
   const Json results{{"score", number(score)},
                      {"max_score", number(max_score)},
                      {"execution_time", number(seconds)},
@@ -213,7 +217,9 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
                      {"test_name_format", "text"},
                      {"visibility", "visible"},
                      {"stdout_visibility", "hidden"},
-                     {"extra_data", Json{{"grader", Json{{"seed", settings.seed}, {"grader_faults", grader_faults(problems)}}}}},
+                     {"extra_data", Json{{"grader", Json{{"seed", settings.seed},
+                                                         {"grader_faults", grader_faults(problems)},
+                                                         {"unprotected", settings.unprotected}}}}},
                      {"tests", std::move(tests)}};
   // The texts are the student's, already escaped (student_text.hpp): replace, never throw on,
   // bytes that are not UTF-8, so that no text can stop the file from being written.

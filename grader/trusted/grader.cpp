@@ -392,7 +392,8 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     written &= write_file(options.gradescope_path, "results.json",
                           [&](std::ostream& out) {
                             write_gradescope(out, results, seconds,
-                                             {options.hidden, options.hidden_as, options.seed, options.gradescope_format});
+                                             {options.hidden, options.hidden_as, options.seed, options.gradescope_format,
+                                              !unprotected.empty()});
                           });
   }
   if (!options.junit_path.empty()) {

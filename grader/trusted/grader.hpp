@@ -64,6 +64,7 @@ struct GradescopeSettings {
   /// The tests' output_format: "html" (each failed simulated test's plot as a PNG, a wrong
   /// matrix as a table, every text escaped) or "text" (the plot as a table of samples).
   std::string format = "html";
+  bool unprotected = false;  ///< the code graded ran without the whole sandbox (--unprotected, --no-isolation)
 };
 
 /// Gradescope's results.json: score (the whole grade), max_score, execution_time, output (one

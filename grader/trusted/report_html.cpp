@@ -120,17 +120,43 @@ Range y_range(const RunFigure& f) {
   return r;
 }
 
-// The points of `s` in the plot's pixels, values clipped to the range.
-std::string points(const Series& s, double scale, double t_end, const Range& y) {
+// A plot's box (px): its size and the axes' margins around the data area.
+struct Box {
+  double width = kWidth, height = kHeight, left = kLeft, right = kRight, top = kTop, bottom = kBottom;
+  double w() const { return width - left - right; }
+  double h() const { return height - top - bottom; }
+};
+
+// The points of `s` in the plot's pixels, values clipped to the range; `precision` decimals.
+std::string points(const Series& s, double scale, double t_end, const Range& y, const Box& box = {}, int precision = 1) {
   std::ostringstream out;
   out.setf(std::ios::fixed);
-  out.precision(1);
-  const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
+  out.precision(precision);
+  bool first = true;
   for (std::size_t k = 0; k < s.t.size() && k < s.v.size(); ++k) {
     if (!std::isfinite(s.v[k])) continue;
-    out << (k ? " " : "") << kLeft + w * s.t[k] / t_end << "," << kTop + h * (1.0 - y.at(s.v[k] * scale));
+    out << (first ? "" : " ") << box.left + box.w() * s.t[k] / t_end << "," << box.top + box.h() * (1.0 - y.at(s.v[k] * scale));
+    first = false;
   }
   return out.str();
+}
+
+// The points of `s` as an SVG path's data in whole pixels, each point after the first relative
+// to the one before ("M40 120l1 -2 1 0"), a point on the pixel before left out, values clipped
+// to the range: a third of points()'s text, for the class page's hundreds of runs.
+std::string path_data(const Series& s, double scale, double t_end, const Range& y, const Box& box) {
+  std::string out;
+  long x0 = 0, y0 = 0;
+  for (std::size_t k = 0; k < s.t.size() && k < s.v.size(); ++k) {
+    if (!std::isfinite(s.v[k])) continue;
+    const long x = std::lround(box.left + box.w() * s.t[k] / t_end);
+    const long yy = std::lround(box.top + box.h() * (1.0 - y.at(s.v[k] * scale)));
+    if (out.empty()) out = "M" + std::to_string(x) + " " + std::to_string(yy) + "l";
+    else if (x != x0 || yy != y0) out += std::to_string(x - x0) + " " + std::to_string(yy - y0) + " ";
+    x0 = x, y0 = yy;
+  }
+  if (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
 }
 
 double end_time(const RunFigure& f) {
@@ -153,23 +179,44 @@ std::vector<double> y_ticks(const Range& y) {
   return ticks;
 }
 
-void axes(std::ostream& out, double t_end, const Range& y, const std::string& unit) {
-  const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
-  const auto px = [&](double t) { return kLeft + w * t / t_end; };
-  const auto py = [&](double v) { return kTop + h * (1.0 - y.at(v)); };
-  out << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << w << "\" height=\"" << h
+void axes(std::ostream& out, double t_end, const Range& y, const std::string& unit, const Box& box = {}, int t_ticks = 8) {
+  const double w = box.w(), h = box.h();
+  const auto px = [&](double t) { return box.left + w * t / t_end; };
+  const auto py = [&](double v) { return box.top + h * (1.0 - y.at(v)); };
+  out << "<rect x=\"" << box.left << "\" y=\"" << box.top << "\" width=\"" << w << "\" height=\"" << h
       << "\" fill=\"none\" stroke=\"#888\"/>\n";
-  const double dt = tick_step(t_end, 8);
+  const double dt = tick_step(t_end, t_ticks);
   for (double t = 0.0; t <= t_end * (1 + 1e-9); t += dt)
-    out << "<text x=\"" << px(t) << "\" y=\"" << kHeight - kBottom + 16 << "\" text-anchor=\"middle\">" << num(t, 4)
+    out << "<text x=\"" << px(t) << "\" y=\"" << box.height - box.bottom + 16 << "\" text-anchor=\"middle\">" << num(t, 4)
         << "</text>\n";
-  out << "<text x=\"" << kLeft + w / 2 << "\" y=\"" << kHeight - 4 << "\" text-anchor=\"middle\">t (s)</text>\n";
+  out << "<text x=\"" << box.left + w / 2 << "\" y=\"" << box.height - 4 << "\" text-anchor=\"middle\">t (s)</text>\n";
   for (const double v : y_ticks(y))
-    out << "<text x=\"" << kLeft - 6 << "\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\">" << num(v, 4) << "</text>\n"
-        << "<line x1=\"" << kLeft << "\" x2=\"" << kWidth - kRight << "\" y1=\"" << py(v) << "\" y2=\"" << py(v)
+    out << "<text x=\"" << box.left - 6 << "\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\">" << num(v, 4) << "</text>\n"
+        << "<line x1=\"" << box.left << "\" x2=\"" << box.width - box.right << "\" y1=\"" << py(v) << "\" y2=\"" << py(v)
         << "\" stroke=\"#eee\"/>\n";
-  out << "<text x=\"14\" y=\"" << kTop + h / 2 << "\" transform=\"rotate(-90 14 " << kTop + h / 2
+  out << "<text x=\"14\" y=\"" << box.top + h / 2 << "\" transform=\"rotate(-90 14 " << box.top + h / 2
       << ")\" text-anchor=\"middle\">" << text(unit) << (y.log ? " (log scale)" : "") << "</text>\n";
+}
+
+// The opening <svg> of a plot in `box`, the part of the run the check does not read shaded,
+// and the axes.
+void plot_open(std::ostream& out, const RunFigure& f, const Range& y, double t_end, const Box& box, int t_ticks,
+               const std::string& font_size) {
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << box.width << "\" height=\"" << box.height
+      << "\" viewBox=\"0 0 " << box.width << " " << box.height << "\" font-family=\"sans-serif\" font-size=\"" << font_size
+      << "\" role=\"img\">\n";
+  if (f.judged_from > 0.0)
+    out << "<rect class=\"unjudged\" x=\"" << box.left << "\" y=\"" << box.top << "\" width=\""
+        << box.w() * std::min(f.judged_from, t_end) / t_end << "\" height=\"" << box.h() << "\" fill=\"#f2f2f2\"/>\n";
+  axes(out, t_end, y, f.unit, box, t_ticks);
+}
+
+// The check's bound, dashed green, across `box`.
+void bound_line(std::ostream& out, const RunFigure& f, const Range& y, const Box& box) {
+  if (!std::isfinite(f.bound)) return;
+  const double yb = box.top + box.h() * (1.0 - y.at(f.bound * f.unit_scale));
+  out << "<line class=\"bound\" x1=\"" << box.left << "\" x2=\"" << box.width - box.right << "\" y1=\"" << yb
+      << "\" y2=\"" << yb << "\" stroke=\"#2ca02c\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\"/>\n";
 }
 
 }  // namespace
@@ -177,20 +224,10 @@ void axes(std::ostream& out, double t_end, const Range& y, const std::string& un
 std::string svg_plot(const RunFigure& f) {
   const double t_end = end_time(f);
   const Range y = y_range(f);
-  const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
+  const Box box;
   std::ostringstream out;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-      << "\" viewBox=\"0 0 " << kWidth << " " << kHeight << "\" font-family=\"sans-serif\" font-size=\"11\" role=\"img\">\n";
-  // What the check does not read: shaded.
-  if (f.judged_from > 0.0)
-    out << "<rect class=\"unjudged\" x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\""
-        << w * std::min(f.judged_from, t_end) / t_end << "\" height=\"" << h << "\" fill=\"#f2f2f2\"/>\n";
-  axes(out, t_end, y, f.unit);
-  if (std::isfinite(f.bound)) {
-    const double yb = kTop + h * (1.0 - y.at(f.bound * f.unit_scale));
-    out << "<line class=\"bound\" x1=\"" << kLeft << "\" x2=\"" << kWidth - kRight << "\" y1=\"" << yb << "\" y2=\""
-        << yb << "\" stroke=\"#2ca02c\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\"/>\n";
-  }
+  plot_open(out, f, y, t_end, box, 8, "11");
+  bound_line(out, f, y, box);
   if (!f.reference.t.empty())
     out << "<polyline class=\"reference\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.5\" points=\""
         << points(f.reference, f.unit_scale, t_end, y) << "\"/>\n";
@@ -199,6 +236,27 @@ std::string svg_plot(const RunFigure& f) {
   out << "</svg>";
   return out.str();
 }
+
+std::string svg_small_multiple(const RunFigure& frame, const std::vector<SmallCurve>& curves, double width,
+                               double height) {
+  const double t_end = end_time(frame);
+  const Range y = y_range(frame);
+  const Box box{width, height, 40, 6, 6, 30};
+  std::ostringstream out;
+  plot_open(out, frame, y, t_end, box, 4, "9");
+  // Whole pixels: a curve of a few hundred points in a plot of a few hundred pixels.
+  for (const SmallCurve& c : curves)
+    out << "<path class=\"run\" data-students=\"" << c.students << "\" fill=\"none\" stroke=\"" << text(c.colour)
+        << "\" stroke-opacity=\"0.6\" d=\"" << path_data(c.series, frame.unit_scale, t_end, y, box) << "\"/>\n";
+  if (!frame.reference.t.empty())
+    out << "<polyline class=\"reference\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.5\" points=\""
+        << points(frame.reference, frame.unit_scale, t_end, y, box, 0) << "\"/>\n";
+  bound_line(out, frame, y, box);
+  out << "</svg>";
+  return out.str();
+}
+
+std::string html_text(const std::string& s) { return text(s); }
 
 std::string png_plot(const RunFigure& f) {
   enum Colour : std::uint8_t { kPaper, kShade, kGrid, kAxis, kStudent, kReference, kBound, kInk };

@@ -25,6 +25,25 @@ void write_html_report(std::ostream& out, const std::vector<ProblemResult>& prob
 /// the run the check does not read, shaded.
 std::string svg_plot(const RunFigure& figure);
 
+/// One curve of a small multiple: a run's series (SI, as RunFigure::student), its colour and how
+/// many students' runs it stands for (identical runs are drawn once).
+struct SmallCurve {
+  Series series;
+  std::string colour;
+  int students = 1;
+};
+
+/// Many runs of one figure's quantity in a plot of `width` x `height` px, the class page's small
+/// multiple: `frame` gives the quantity, unit, bound, unjudged start and the reference's run
+/// (drawn over the curves, blue), and its `student` series the values the y axis must hold (every
+/// run of every small multiple of the figure, so that they share one scale). Each curve is a
+/// path of class "run" with data-students, in whole pixels.
+std::string svg_small_multiple(const RunFigure& frame, const std::vector<SmallCurve>& curves, double width,
+                               double height);
+
+/// `s` for an HTML element or a quoted attribute: & < > " ' escaped (student_text.hpp).
+std::string html_text(const std::string& s);
+
 /// The same figure as a PNG file's bytes (raster.hpp): the picture results.json embeds, where
 /// an inline SVG would not survive Gradescope's sanitizer. Tick labels are drawn; every other
 /// text (the quantity, its unit, the key) is the caption's.

@@ -52,12 +52,18 @@ done
 cmake -DJSON="$work/out/bob/results.json" -DFULL=ALL "-DOUTPUT=found in the folder 'hw2'" -P "$check"
 cmake -DJSON="$work/out/carol/results.json" "-DFULL=$(IFS=';'; echo "${OPSPACE_KEYS[*]:1}")" -P "$check"
 grep -qE 'did not answer within (5 s|25 s of waiting)' "$work/out/carol/report.txt" || { echo "carol's report does not say she hung (within 1a's 5 s)"; exit 1; }
+# The class page (issue 49) puts carol at the top, alone: her two tests interrupted by the time-out.
+grep -q '<tr class="attention" data-student="3">.*2 test(s) interrupted' "$work/out/class.html" ||
+  { echo "the class page does not put carol's two interrupted tests at the top"; exit 1; }
+[ "$(grep -c '<tr class="attention"' "$work/out/class.html")" -eq 1 ] || { echo "the class page flags others than carol"; exit 1; }
 
 bash "$repo/scripts/regrade" "$work/in2" "$work/out2" --jobs 1 --limit 6 -- --timeout 30 2> "$work/regrade2.err"
 cat "$work/out2/gradebook.csv"
 grep -q "^carol,${zeros//0/},0,,\"not graded: see the report\"\$" "$work/out2/gradebook.csv"
 grep -q 'grading took more than 6 s and was stopped' "$work/out2/carol/report.txt"
 cmake -DJSON="$work/out2/carol/results.json" -DEMPTY=ON "-DOUTPUT=grading took more than 6 s" -P "$check"
+grep -q '<tr class="attention" data-student="1">.*not graded: grading took more than 6 s and was stopped' "$work/out2/class.html" ||
+  { echo "the class page does not put carol, not graded, at the top"; exit 1; }
 echo "regrade graded the stub, the reference and the hanging submission without stalling"
 
 # Issue 38: a student's folder name and prints decide nothing but their own grade. Problem 1a
