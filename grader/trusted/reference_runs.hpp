@@ -3,8 +3,10 @@
 /// law run by the grader in each simulated test's scenario. A run costs as much as the
 /// student's, so it is made only for a figure that needs it, a failed test's, and kept: for
 /// every later figure of this process, and on disk in the grader's cache (set_reference_store),
-/// where every later grading by the same grader finds it. A passed test's figure shows it when
-/// it is known already.
+/// where every later grading by the same grader finds it. A passed test's figure shows the
+/// student's run alone, whatever the store holds: a grading's page and results.json do not
+/// depend on what earlier gradings left (tests/graded/check_jobs.sh compares a cold store's with
+/// a warm one's).
 #pragma once
 
 #include <functional>
@@ -23,9 +25,6 @@ namespace opspace::grading {
 /// run is made and a figure shows the student's run alone.
 void set_reference_store(const std::string& folder);
 
-/// Whether the reference's series `key` is known already (in this process or in the store).
-bool reference_known(const std::string& key);
-
 /// The reference's series `key`, made by `make` the first time it is asked for.
 const Series& reference_series(const std::string& key, const std::function<Series()>& make);
 
@@ -34,8 +33,7 @@ const Series& reference_series(const std::string& key, const std::function<Serie
 /// series are: a later grading by the same grader reads it without running the reference.
 double reference_statistic(const std::string& key, const std::function<double()>& make);
 
-/// Fills the reference series of `figures`: all of them when `needed` (a failed test), else
-/// those already known.
+/// Fills the reference series of `figures` when `needed` (a failed test); else leaves them empty.
 void attach_references(std::vector<RunFigure>& figures, bool needed);
 
 }  // namespace opspace::grading

@@ -24,9 +24,12 @@ cp "$repo/tests/mutants/p2_no_feedforward.cpp" "$work/exercises/p2.cpp"
 cp "$repo/tests/mutants/p3_force_times_lambda.cpp" "$work/exercises/p3.cpp"
 cp "$repo/tests/mutants/p4_potentials_swapped.cpp" "$work/exercises/p4.cpp"
 
-# --jobs 2 first: where the grader's cache holds no reference run yet, its problems make theirs at once.
+# --jobs 2 first, with a cache of its own that holds no reference run yet: its problems make
+# theirs at once, and --jobs 1 then grades with a warm store. Seen to fail so (the bundle's
+# proof, a1ccd14's successor): a passed test's figure showed the reference only once the store
+# held it, and results.json carried it.
 for jobs in 2 1; do
-  "$grader" --unprotected --exercises "$work/exercises" --seed "$seed" --jobs "$jobs" \
+  "$grader" --unprotected --exercises "$work/exercises" --seed "$seed" --jobs "$jobs" --cache "$work/cache" \
     --gradescope "$work/$jobs.json" --html "$work/$jobs.html" > "$work/$jobs.txt" 2> "$work/$jobs.err" ||
     fail "the grader exited with $? under --jobs $jobs: $(cat "$work/$jobs.txt" "$work/$jobs.err")"
 done
