@@ -14,10 +14,10 @@
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/model/catalogue.hpp"
-#include <problems/1b/scenario.hpp>
-#include <problems/2/scenario.hpp>
-#include <problems/3/scenario.hpp>
-#include <problems/4/scenario.hpp>
+#include <problems/1b/run/scenario.hpp>
+#include <problems/2/run/scenario.hpp>
+#include <problems/3/run/scenario.hpp>
+#include <problems/4/run/scenario.hpp>
 
 namespace {
 

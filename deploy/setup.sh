@@ -100,7 +100,9 @@ rm -rf "$REPO/solutions" "$REPO/tests/mutants" "$REPO/tests/tamper" "$REPO/tests
        "$BUILD/solutions" "$BUILD/tests/mutants" "$BUILD/tests/tamper" "$BUILD/grading-cache" \
        "$BUILD/grader/suite/CMakeFiles/opspace_graded.dir" "$BUILD/Testing"
 rm -rf "$BUILD"/problems/*/CMakeFiles/opspace_graded_*.dir
-rm -f "$REPO"/grader/suite/*.cpp "$REPO"/problems/*/graded.cpp "$REPO"/problems/*/mistakes.cpp "$REPO"/problems/*/answers.hpp
+# Each problem's secret side, by place (problems/CMakeLists.txt): its whole grade/ folder.
+rm -rf "$REPO"/problems/*/grade
+rm -f "$REPO"/grader/suite/*.cpp
 find "$BUILD" -name '*-sol' -type f -delete
 find "$BUILD" \( -name '*-sol.dir' -o -name 'opspace_solutions.dir' \) -type d -prune -exec rm -rf {} +
 # What remains (the library, the grader, its runner loops, the stubs) is root's alone: the
@@ -115,9 +117,11 @@ while IFS='=' read -r key value; do
 done < "$BUILD/grader/runner-toolchain.txt"
 
 # --- 6. prove the lockdown and grade the stubs --------------------------------------------------
-for gone in solutions tests/mutants tests/tamper problems/1b/graded.cpp problems/4/mistakes.cpp problems/4/answers.hpp \
-           grader/suite/reference.cpp build/release/apps/hw2-grade-sol; do
+for gone in solutions tests/mutants tests/tamper grader/suite/reference.cpp build/release/apps/hw2-grade-sol; do
   [ ! -e "$REPO/$gone" ] || fail "$REPO/$gone is still there"
+done
+for grade in "$REPO"/problems/*/grade; do
+  [ ! -e "$grade" ] || fail "$grade (a problem's secret side) is still there"
 done
 if [ "$(id -u)" -eq 0 ]; then
   for secret in "$BUILD/apps/hw2-grade" "$REPO/grader/suite/CMakeLists.txt" \

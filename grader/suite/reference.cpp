@@ -1,5 +1,5 @@
 // The grader's answers to every function of the problem set, gathered as a Hw2Api: each
-// problem's answers are in its folder (problems/<key>/answers.hpp, included by the build's
+// problem's answers are in its folder (problems/<key>/grade/answers.hpp, included by the build's
 // problem_answers.hpp, generated from problems.txt).
 #include "oracles.hpp"
 #include "problem_answers.hpp"

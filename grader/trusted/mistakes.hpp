@@ -26,7 +26,7 @@ struct Mistake {
   std::vector<std::string> caught_by;  ///< names of the graded tests that must fail
 };
 
-/// mistakes_1a() ...: each problem's mistakes (problems/<key>/mistakes.cpp), one per
+/// mistakes_1a() ...: each problem's mistakes (problems/<key>/grade/mistakes.cpp), one per
 /// problem of the list (protocol/problems.hpp).
 #define OPSPACE_DECLARE_MISTAKES(key) std::vector<Mistake> mistakes_##key();
 OPSPACE_PROBLEM_KEYS(OPSPACE_DECLARE_MISTAKES)

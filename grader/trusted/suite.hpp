@@ -18,7 +18,7 @@ struct Problem {
 };
 
 /// problem_1a() ...: each problem of the list (protocol/problems.hpp) with its graded tests
-/// (problems/<key>/graded.cpp; the handout's grader replays them, deploy/handout/replay_suite.cpp).
+/// (problems/<key>/grade/graded.cpp; the handout's grader replays them, deploy/handout/replay_suite.cpp).
 #define OPSPACE_DECLARE_PROBLEM(key) Problem problem_##key();
 OPSPACE_PROBLEM_KEYS(OPSPACE_DECLARE_PROBLEM)
 #undef OPSPACE_DECLARE_PROBLEM

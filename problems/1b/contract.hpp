@@ -39,7 +39,7 @@ struct State {
   Eigen::Vector3d p;         ///< gravity at the tip, Jbar_v^T g
 };
 
-/// The goal and gains (problem set values in problems/1b/scenario.hpp).
+/// The goal and gains (problem set values in problems/1b/run/scenario.hpp).
 struct Goal {
   Eigen::Vector3d x_d;  ///< desired tip position (m)
   Vector6d q_d;         ///< desired joint positions (rad); only q_d[1] differs from q

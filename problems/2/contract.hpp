@@ -41,7 +41,7 @@ struct State {
   Vector6d p;                ///< gravity at the task, Jbar0^T g
 };
 
-/// The desired trajectory at time t and the gains (problem-set values in problems/2/scenario.hpp).
+/// The desired trajectory at time t and the gains (problem-set values in problems/2/run/scenario.hpp).
 /// The library computes x_d and xdot_d; xddot_d is YOUR answer to 2(a), desired_acceleration(t).
 struct Goal {
   Vector7d x_d;      ///< [x_d, y_d, z_d, lambda_0d, lambda_1d, lambda_2d, lambda_3d]

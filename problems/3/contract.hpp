@@ -26,7 +26,7 @@ using hw2::p2::Vector7d;
 /// side of lambda_d, v, w, J0, A, g, Lambda0, Jbar0, N0, p), computed by the library.
 using State = hw2::p2::State;
 
-/// The goal at time t and the gains (problem-set values in problems/3/scenario.hpp). The library
+/// The goal at time t and the gains (problem-set values in problems/3/run/scenario.hpp). The library
 /// computes the whole desired trajectory of problem 2, x_d, xdot_d and xddot_d (x_d's first
 /// component is unused here: x is force-controlled), and the desired generalized force F_d.
 struct Goal {

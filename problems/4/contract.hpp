@@ -88,7 +88,7 @@ struct State {
   Eigen::Vector3d p;           ///< gravity at the tip, Jbar_v^T g
 };
 
-/// The target and gains (values in problems/4/scenario.hpp).
+/// The target and gains (values in problems/4/run/scenario.hpp).
 struct Goal {
   Eigen::Vector3d x_d;  ///< desired tip position (m)
   double kpx = 0;  ///< tip stiffness: acceleration per metre of x - x_d (1/s^2)

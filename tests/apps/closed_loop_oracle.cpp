@@ -19,10 +19,10 @@
 #include <opspace/hw2/p3.hpp>
 #include <opspace/hw2/p4.hpp>
 #include <opspace/model/urdf.hpp>
-#include <problems/1b/scenario.hpp>
-#include <problems/2/scenario.hpp>
-#include <problems/3/scenario.hpp>
-#include <problems/4/scenario.hpp>
+#include <problems/1b/run/scenario.hpp>
+#include <problems/2/run/scenario.hpp>
+#include <problems/3/run/scenario.hpp>
+#include <problems/4/run/scenario.hpp>
 #include <opspace/simulation/simulation.hpp>
 
 namespace {

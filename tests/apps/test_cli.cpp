@@ -1,4 +1,4 @@
-// The programs' command lines (apps/cli.cpp): what hw2-p1 .. hw2-p4 accept, and for what they
+// The programs' command lines (lib/src/programs/cli.cpp): what hw2-p1 .. hw2-p4 accept, and for what they
 // refuse, exit code 2 with a message that names the argument. The refusals of --duration and
 // --csv values and the hw2-p1 cases are regression tests for what fuzzing and its review
 // found (docs/fuzzing.md).
@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include <problems/1b/command.hpp>
-#include <problems/1b/scenario.hpp>
-#include <problems/4/command.hpp>
+#include <problems/1b/run/command.hpp>
+#include <problems/1b/run/scenario.hpp>
+#include <problems/4/run/command.hpp>
 
-#include "cli.hpp"
+#include <opspace/programs/cli.hpp>
 
 namespace {
 

@@ -42,6 +42,12 @@ flock 9  # one run at a time sets up or uses an image
 bash "$repo/scripts/autograder" "$work/bundle" -- "${options[@]}"
 mkdir -p "$work/unzipped"
 (cd "$work/unzipped" && cmake -E tar xf "$work/bundle/autograder.zip")
+# A course's own secret files, planted in a problem's grade/ (a note and a nested header, neither
+# compiled): setup.sh must remove them with the rest of that folder, by place.
+[ -d "$work/unzipped/opspace/problems/1b/grade" ] || { echo "the bundle has no problems/1b/grade/"; exit 1; }
+printf 'planted by tests/deploy/autograder.sh: a secret of the course\n' > "$work/unzipped/opspace/problems/1b/grade/planted-secret.md"
+mkdir -p "$work/unzipped/opspace/problems/2/grade/helpers"
+printf '// planted by tests/deploy/autograder.sh\n' > "$work/unzipped/opspace/problems/2/grade/helpers/planted.hpp"
 fingerprint=$(cd "$work/unzipped" && { find . -type f -printf '%m %p\n' | LC_ALL=C sort
   find . -type f -print0 | LC_ALL=C sort -z | xargs -0 sha256sum; } | sha256sum | cut -c1-16)
 root="$images/$fingerprint"
@@ -63,6 +69,8 @@ rm -rf "$work/unzipped"
 for gone in solutions tests/mutants tests/tamper build/release/apps/hw2-grade-sol build/release/grading-cache/none; do
   [ ! -e "$root/source/opspace/$gone" ] || { echo "setup.sh left $gone"; exit 1; }
 done
+leftover=$(cd "$root/source/opspace" && find problems -mindepth 2 -maxdepth 2 -name grade -print)
+[ -z "$leftover" ] || { echo "setup.sh left a problem's secret side in the image: $leftover"; exit 1; }
 rm -rf "$work"/submission-* "$work/stubs"
 
 stubs="$work/stubs"

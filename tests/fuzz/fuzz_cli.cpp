@@ -1,4 +1,4 @@
-// libFuzzer target: the command lines of hw2-p1 .. hw2-p4 (apps/cli.cpp). An input is the
+// libFuzzer target: the command lines of hw2-p1 .. hw2-p4 (lib/src/programs/cli.cpp). An input is the
 // program's name on its first line (hw2-p1, hw2-p2, hw2-p3 or hw2-p4), then one argument per
 // line (an argument cannot hold a newline here, nor a NUL in a real argv). Each command line
 // must end in one of three ways: the program goes on (-1) with options it can run (a duration
@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include <problems/1b/command.hpp>
-#include <problems/4/command.hpp>
+#include <problems/1b/run/command.hpp>
+#include <problems/4/run/command.hpp>
 
-#include "cli.hpp"
+#include <opspace/programs/cli.hpp>
 
 namespace {
 

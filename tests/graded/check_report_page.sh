@@ -6,12 +6,12 @@
 #      attributes: the student's tip error passes the 5 mm bound after 2 s, the reference's (the
 #      problem set's law in the same scenario) stays within it. Why each must hold: with J+ the
 #      null-space torque leaves Jv^T (Jbar_v - Jv+)^T g on the tip, tens of newtons at these poses
-#      (problems/1b/graded.cpp), while the dynamically consistent law leaves none: the reference's
+#      (problems/1b/grade/graded.cpp), while the dynamically consistent law leaves none: the reference's
 #      tip stays at the mm scale (0.7 mm at most on this scenario), the mutant's moves hundreds;
 #   2. the text report names the replay command of that test and ends with "open ...";
 #      running the command on hw2-p1 linked with the same file prints the final tip error the
 #      figure ends with, to 1e-9 m: the same scenario, law and arithmetic
-#      (problems/1b/scenario.hpp);
+#      (problems/1b/run/scenario.hpp);
 #   3. results.json: valid, under 1 MB, no raw < or > in a text, the test tagged with the mistake
 #      the catalogue names and its output holding the run's text table.
 # Seen to fail: with the grader of main ("unknown or incomplete argument '--html'"); with

@@ -13,7 +13,7 @@
 # Seen to fail: check 1 with the second grading's p2.cpp the reference's (a run that does change:
 # "the figures ... differ under seeds 41 and 42"); check 2 with the same seed twice ("the same
 # under seeds 41 and 41"). No simulated test can be made to draw from the seed here without
-# editing problems/*/graded.cpp: check 1 is the guard that one day fails if one does.
+# editing problems/*/grade/graded.cpp: check 1 is the guard that one day fails if one does.
 set -euo pipefail
 grader=$1 program=$2 repo=$3 work=$4
 seeds=(41 42)  # any two seeds

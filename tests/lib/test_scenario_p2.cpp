@@ -1,4 +1,4 @@
-// Problem 2's scenario (problems/2/scenario.hpp): the desired trajectory against the problem set's
+// Problem 2's scenario (problems/2/run/scenario.hpp): the desired trajectory against the problem set's
 // formulas and finite differences, the start pose against robots.md, the Observer against
 // its definitions, and the Observers' refusal of a robot with another number of joints.
 #include <doctest/doctest.h>
@@ -7,9 +7,9 @@
 
 #include "opspace/algorithms/euler_params.hpp"
 #include "opspace/math/constants.hpp"
-#include <problems/1b/scenario.hpp>
-#include <problems/2/scenario.hpp>
-#include <problems/4/scenario.hpp>
+#include <problems/1b/run/scenario.hpp>
+#include <problems/2/run/scenario.hpp>
+#include <problems/4/run/scenario.hpp>
 #include "opspace/model/urdf.hpp"
 #include "support/problem2.hpp"
 #include "support/random.hpp"

@@ -1,11 +1,11 @@
-// Problem 3's scenario (problems/3/scenario.hpp): the tool and the plane against robots.md, the goal
+// Problem 3's scenario (problems/3/run/scenario.hpp): the tool and the plane against robots.md, the goal
 // against problem 2's trajectory, and the sign of the contact force the run logs.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
-#include <problems/2/scenario.hpp>
-#include <problems/3/scenario.hpp>
+#include <problems/2/run/scenario.hpp>
+#include <problems/3/run/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"

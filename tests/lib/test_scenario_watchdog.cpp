@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "opspace/scenarios/common.hpp"
-#include <problems/1b/scenario.hpp>
+#include <problems/1b/run/scenario.hpp>
 #include "opspace/scenarios/watchdog.hpp"
 
 using namespace opspace;

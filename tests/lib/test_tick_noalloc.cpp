@@ -7,10 +7,10 @@
 #include <utility>
 
 #include "opspace/algorithms/opspace.hpp"
-#include <problems/1b/scenario.hpp>
-#include <problems/2/scenario.hpp>
-#include <problems/3/scenario.hpp>
-#include <problems/4/scenario.hpp>
+#include <problems/1b/run/scenario.hpp>
+#include <problems/2/run/scenario.hpp>
+#include <problems/3/run/scenario.hpp>
+#include <problems/4/run/scenario.hpp>
 #include "opspace/model/urdf.hpp"
 #include "support/count_allocations.hpp"
 

@@ -1,10 +1,10 @@
 // What the live lab adds to each step allocates nothing on the heap once its workspaces exist:
 // the push's force (lib/src/live/push.cpp) and problem 1b's prediction of its offset
-// (problems/1b/lab.cpp, offset.cpp). The only file of test_live that counts allocations.
+// (problems/1b/run/lab.cpp, offset.cpp). The only file of test_live that counts allocations.
 #include <doctest/doctest.h>
 
 #include "opspace/hw2/p1b.hpp"
-#include <problems/1b/lab.hpp>
+#include <problems/1b/run/lab.hpp>
 #include "opspace/live/push.hpp"
 #include "support/count_allocations.hpp"
 

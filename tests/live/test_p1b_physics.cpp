@@ -1,6 +1,6 @@
-// Problem 1b live (problems/1b/lab.cpp, offset.cpp): what its page says of the physics,
+// Problem 1b live (problems/1b/run/lab.cpp, offset.cpp): what its page says of the physics,
 // measured on the live lab's own loop (a Session stepped without clock or browser) with the
-// reference controller. Derivation: problems/1b/offset.hpp and docs/live.md ("What a push does to
+// reference controller. Derivation: problems/1b/run/offset.hpp and docs/live.md ("What a push does to
 // the tip"): under PART3 the tip error e = x - x_d obeys
 //   dde + kvx de + kpx e = Jv A^-1 Je^T F + (dJv dq - Jv A^-1 b),
 // so a steady push F holds the tip, once the arm is still, at e = Jv A^-1 Je^T F / kpx, the
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "opspace/hw2/p1b.hpp"
-#include <problems/1b/lab.hpp>
+#include <problems/1b/run/lab.hpp>
 #include "opspace/live/run.hpp"
 #include "opspace/live/session.hpp"
 
@@ -75,7 +75,7 @@ double largest_error(const Trace& trace, double from, double to) {
 
 }  // namespace
 
-// Seen to fail: with the prediction written Lambda_v Jv A^-1 Je^T F / kpx in problems/1b/offset.cpp (a
+// Seen to fail: with the prediction written Lambda_v Jv A^-1 Je^T F / kpx in problems/1b/run/offset.cpp (a
 // first guess), it said 116 mm where the tip stood 42 mm off, and the identity's residual was
 // 3.7 m/s^2 (bound 0.83); with the prediction zero, 42 mm off and 3.5 m/s^2.
 TEST_CASE("a steady push on the elbow holds PART3's tip at the page's prediction Jv A^-1 Je^T F / kpx") {

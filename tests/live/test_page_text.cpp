@@ -1,4 +1,4 @@
-// What each problem's live page says above the run (problems/*/lab.cpp, issue 46): its title and
+// What each problem's live page says above the run (problems/*/run/lab.cpp, issue 46): its title and
 // subtitle state what the run shows, measured, never a promise that a student's controller may
 // break (1b's stub once read "PART3's tip holds" with the tip 1136 mm off).
 #include <doctest/doctest.h>
@@ -12,10 +12,10 @@
 #include "opspace/hw2/p2.hpp"
 #include "opspace/hw2/p3.hpp"
 #include "opspace/hw2/p4.hpp"
-#include <problems/1b/lab.hpp>
-#include <problems/2/lab.hpp>
-#include <problems/3/lab.hpp>
-#include <problems/4/lab.hpp>
+#include <problems/1b/run/lab.hpp>
+#include <problems/2/run/lab.hpp>
+#include <problems/3/run/lab.hpp>
+#include <problems/4/run/lab.hpp>
 
 using namespace opspace;
 

@@ -7,7 +7,7 @@
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/live/push.hpp"
 #include "opspace/math/constants.hpp"
-#include <problems/1b/scenario.hpp>
+#include <problems/1b/run/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
 

@@ -1,4 +1,4 @@
-// A live session without clock or browser (lib/src/live/session.cpp, problems/1b/lab.cpp): the same
+// A live session without clock or browser (lib/src/live/session.cpp, problems/1b/run/lab.cpp): the same
 // steps as the offline run, the page's commands, a scripted push under PART2 and PART3, and a
 // controller that fails.
 #include <doctest/doctest.h>
@@ -16,10 +16,10 @@
 #include "opspace/hw2/p4.hpp"
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
-#include <problems/1b/lab.hpp>
-#include <problems/2/lab.hpp>
-#include <problems/3/lab.hpp>
-#include <problems/4/lab.hpp>
+#include <problems/1b/run/lab.hpp>
+#include <problems/2/run/lab.hpp>
+#include <problems/3/run/lab.hpp>
+#include <problems/4/run/lab.hpp>
 #include "opspace/live/run.hpp"
 #include "opspace/live/session.hpp"
 

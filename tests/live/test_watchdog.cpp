@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "opspace/hw2/p1b.hpp"
-#include <problems/1b/lab.hpp>
+#include <problems/1b/run/lab.hpp>
 #include "opspace/live/run.hpp"
 #include "opspace/scenarios/watchdog.hpp"
 

@@ -1,5 +1,5 @@
 // A known-wrong problem 1a (the catalogue's "A = diag(m1 + m2, m2): the coupling term
-// forgotten", problems/1a/mistakes.cpp) as a student would write it: solutions/p1a.cpp with
+// forgotten", problems/1a/grade/mistakes.cpp) as a student would write it: solutions/p1a.cpp with
 // the m2 d1dot d2dot term of the kinetic energy left out of the mass matrix. Graded as a
 // submission by check_mutant_page.sh: the report page's table of M shows the two off-diagonal
 // entries wrong (problems/1a/guide.md's picture).

@@ -1,5 +1,5 @@
 // A known-wrong problem 1b (the catalogue's "PART3 projects with the pseudo-inverse, like
-// PART2", problems/1b/mistakes.cpp) as a student would write it: solutions/p1b.cpp with
+// PART2", problems/1b/grade/mistakes.cpp) as a student would write it: solutions/p1b.cpp with
 // PART3's projector I - Jv^T Jv+^T. Graded as a submission and linked into hw2-p1 as a program
 // (hw2-p1-part3-pinv), by check_report_page.sh: the report's page plots its drift against the
 // reference, and its replay command, run on this program, reproduces the graded run.

@@ -1,5 +1,5 @@
 // A slip in problem 2 (the catalogue's "E^+ evaluated at lambda_d instead of the current lambda",
-// problems/2/mistakes.cpp) as a student would write it: solutions/p2.cpp with every E^+ of the
+// problems/2/grade/mistakes.cpp) as a student would write it: solutions/p2.cpp with every E^+ of the
 // controller taken at lambda_d. Along the graded run lambda stays within a milliradian of
 // lambda_d, so the torque differs from the law's by 0.015 % at most and every judged statistic
 // is the reference's: check_slip.cmake grades it with the real grader and expects the law test

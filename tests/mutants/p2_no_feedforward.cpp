@@ -1,5 +1,5 @@
 // A known-wrong problem 2 (the catalogue's "no feed-forward [vdot_d; wdot_d]",
-// problems/2/mistakes.cpp) as a student would write it: solutions/p2.cpp with 2(b)'s
+// problems/2/grade/mistakes.cpp) as a student would write it: solutions/p2.cpp with 2(b)'s
 // E^+ xddot_d left out of the controller's desired acceleration. Graded as a submission by
 // check_mutant_page.sh: the report page plots its position error a few mm above the 1 mm bound
 // while the reference's stays under it (problems/2/guide.md's picture).

@@ -1,5 +1,5 @@
 // A known-wrong problem 3 (the catalogue's "the desired force multiplied by Lambda0",
-// problems/3/mistakes.cpp) as a student would write it: solutions/p3.cpp with
+// problems/3/grade/mistakes.cpp) as a student would write it: solutions/p3.cpp with
 // Omega-bar F_d sent through Lambda0 like an acceleration. Graded as a submission by
 // check_mutant_page.sh: the report page plots its force error far above the 1 N bound while
 // the reference's stays under it (problems/3/guide.md's picture).

@@ -1,5 +1,5 @@
 // A known-wrong problem 4 (the catalogue's "Z0 and Y0 potentials swapped",
-// problems/4/mistakes.cpp) as a student would write it: solutions/p4.cpp with the
+// problems/4/grade/mistakes.cpp) as a student would write it: solutions/p4.cpp with the
 // self-motion potential of each target given to the other. Graded as a submission by
 // check_mutant_page.sh: the report page plots its tip error never coming under the 5 mm bound
 // while the reference's does within 2 s (problems/4/guide.md's picture).

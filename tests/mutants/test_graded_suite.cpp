@@ -1,5 +1,5 @@
 // The graded suite must discriminate: full marks for the reference solutions, each known
-// mistake (problems/*/mistakes.cpp) loses exactly the tests aimed at it, no fewer
+// mistake (problems/*/grade/mistakes.cpp) loses exactly the tests aimed at it, no fewer
 // and no more, and the grader names it when it is made alone. (That the untouched stubs
 // score 0 is checked on the real hw2-grade program: see tests/graded/check_stubs.cmake.)
 #include <doctest/doctest.h>

@@ -1,6 +1,6 @@
 /// @file problem2.hpp
 /// Problem 2's desired trajectory as the problem set writes it, independently of the
-/// library: what the library tests and the graded suite check problems/2/scenario.hpp and 2(a) against.
+/// library: what the library tests and the graded suite check problems/2/run/scenario.hpp and 2(a) against.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,7 +1,7 @@
 /// @file live/loop_lab.hpp
 /// The one Lab over any problem's scenario (scenarios/loop.hpp): its Loop, rebuilt from the
 /// scenario's start by each reset, whose ticks are kept as the run's Result for its plots and
-/// replay page. A problem's lab (problems/<key>/lab.hpp) adds only its own: what the page plots
+/// replay page. A problem's lab (problems/<key>/run/lab.hpp) adds only its own: what the page plots
 /// and marks, the laws it switches, what it predicts of a push.
 #pragma once
 

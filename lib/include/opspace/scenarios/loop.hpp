@@ -1,6 +1,6 @@
 /// @file scenarios/loop.hpp
 /// The one closed loop of every problem. A problem describes its scenario once, as a class
-/// (`p<key>::Scenario`, in problems/<key>/scenario.hpp); Loop<Scenario> runs it one tick at a
+/// (`p<key>::Scenario`, in problems/<key>/run/scenario.hpp); Loop<Scenario> runs it one tick at a
 /// time (the live lab's loop) and run(scenario, options) for a duration (the programs', the
 /// graded tests' and the reference's runs).
 ///

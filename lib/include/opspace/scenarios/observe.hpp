@@ -1,5 +1,5 @@
 /// @file scenarios/observe.hpp
-/// What the problems' Observers (problems/<key>/scenario.cpp) share: the joint-space part of a
+/// What the problems' Observers (problems/<key>/run/scenario.cpp) share: the joint-space part of a
 /// State, the tip of a point task, and the check of the robot's number of joints.
 #pragma once
 

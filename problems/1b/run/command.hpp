@@ -1,0 +1,22 @@
+// hw2-p1's command line (problem 1b's program): PART first, then cli::parse()'s options.
+// tests/apps/test_cli.cpp checks it and tests/fuzz/fuzz_cli.cpp fuzzes it.
+#pragma once
+
+#include <opspace/hw2/p1b.hpp>
+
+#include <opspace/programs/cli.hpp>
+
+namespace cli {
+
+/// hw2-p1's command line: PART first (1, 2, 3 or compare; --help and -h only there), then
+/// --no-joint-damping (PART 1 only) and parse()'s options but --help.
+struct P1Command {
+  opspace::hw2::p1b::Part part = opspace::hw2::p1b::Part::kTipPd;
+  bool comparing = false;  ///< PART "compare": PART2 and PART3, their drift overlaid
+  Options options;         ///< csv_path defaults to out/hw2-p1-part<PART>[-no-damping].csv
+};
+
+/// Parses hw2-p1's argv into `command` (usage: the program's); returns as parse() does.
+int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& command);
+
+}  // namespace cli

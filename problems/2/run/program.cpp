@@ -1,0 +1,114 @@
+// hw2-p2 [options]: problem 2 on the simulated KUKA iiwa with the functions of exercises/p2.cpp
+// (hw2-p2) or solutions/p2.cpp (hw2-p2-sol).
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <opspace/hw2/p2.hpp>
+#include <problems/2/run/scenario.hpp>
+#include <problems/2/run/pictures.hpp>
+#include <opspace/visuals/visuals.hpp>
+
+#include <opspace/programs/cli.hpp>
+#include <opspace/programs/program.hpp>
+#include "reference_runs.hpp"
+
+#ifdef OPSPACE_LIVE
+#include <problems/2/run/lab.hpp>
+#endif
+
+namespace {
+
+namespace p2 = opspace::scenarios::p2;
+
+int usage(const char* program, int code) {
+  (code ? std::cerr : std::cout)
+      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay] [--live [--port N]]\n"
+      << "       [--test NAME [--seed N]]   replay a graded test's run, as the grader's report prints it\n"
+      << "  link7 of the iiwa tracks x_d(t) and lambda_d(t) of problem 2\n"
+      << "  --duration  simulated seconds (default " << p2::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
+      << "  --csv       log file (default out/" << cli::program_name(program) << ".csv in the repository); plots and the 3D replay page are\n"
+      << "              written next to it, named after it (docs/visuals.md)\n"
+      << "  --no-plots, --no-replay  skip those pictures\n"
+      << "  --live      run in real time in the browser, push the arm with the mouse (docs/live.md); until\n"
+      << "              Ctrl-C, or --duration simulated seconds. --port N: its port (default: a free one)\n";
+  return code;
+}
+
+/// The run's results beside the grader's bounds and the reference run.
+void print_summary(const p2::Result& r, double duration, const std::string& csv) {
+  const p2::Summary& s = r.summary;
+  const p2::Summary ref = reference::p2();
+  cli::print_summary_start(s.time_reached, duration, reference::kP2Duration);
+  cli::Verdict table(cli::reference_heading(reference::kP2Duration));
+  table.section("after " + cli::show(p2::kSettleTime, cli::kSeconds));
+  table.at_most("position error, RMS", s.position_error_rms, p2::kPositionErrorRmsMax, ref.position_error_rms,
+                cli::kMm);
+  table.shown("position error, max", s.position_error_max, ref.position_error_max, cli::kMm);
+  table.at_most("orientation error, RMS", s.orientation_error_rms, p2::kOrientationErrorRmsMax,
+                ref.orientation_error_rms, cli::kDegrees);
+  table.shown("orientation error, max", s.orientation_error_max, ref.orientation_error_max, cli::kDegrees);
+  table.section("over the whole run");
+  table.at_most("largest lambda step (1 ms)", s.lambda_step_max, p2::kLambdaStepMax, ref.lambda_step_max, cli::kNone);
+  // The grader bounds how far a joint goes past its limit: -margin.
+  const auto past = [](const p2::Summary& x) {
+    return x.joint_limit_margin < 0 ? cli::show(-x.joint_limit_margin, cli::kDegrees) + cli::joint(x.joint_limit_joint)
+                                    : "none (" + cli::show(x.joint_limit_margin, cli::kDegrees) + " inside)";
+  };
+  const bool within = -s.joint_limit_margin <= p2::kJointLimitExcessMax;
+  table.row("furthest past a joint limit", past(s), "<= " + cli::show_bound(p2::kJointLimitExcessMax, cli::kDegrees),
+            past(ref), within ? "ok" : "MISSES");
+  if (ref.joint_limit_margin < 0) {
+    table.note("expected: the law has no joint-limit task and the simulation enforces no limit, so the");
+    table.note("reference too takes joint " + std::to_string(ref.joint_limit_joint + 1) +
+               " past its limit at the far end of the y sweep (problems/2/guide.md)");
+  }
+  if (s.time_reached >= p2::kSettleTime + p2::kPeriod) {
+    table.row("joint drift over the last period", cli::show(s.joint_drift_per_period, cli::kDegrees) +
+                                                      cli::joint(s.joint_drift_joint),
+              "<= " + cli::show_bound(p2::kJointDriftPerPeriodMax, cli::kDegrees),
+              cli::show(ref.joint_drift_per_period, cli::kDegrees) + cli::joint(ref.joint_drift_joint),
+              s.joint_drift_per_period <= p2::kJointDriftPerPeriodMax ? "ok" : "MISSES");
+  } else {
+    table.row("joint drift over the last period", "(run too short)",
+              "<= " + cli::show_bound(p2::kJointDriftPerPeriodMax, cli::kDegrees),
+              cli::show(ref.joint_drift_per_period, cli::kDegrees) + cli::joint(ref.joint_drift_joint));
+  }
+  cli::add_torque_rows(table, s, ref);
+  table.print(std::cout, "bash scripts/grade --problem 2 says which test and why");
+  cli::print_summary_end(r, csv);
+}
+
+/// With --test: the values the report's figures end with (problems/2/grade/graded.cpp).
+void print_finals(const cli::Options& options, const p2::Result& r) {
+  const p2::Sample& last = r.samples.back();
+  cli::print_final(options, "position error |x_p - x_pd|", p2::position_error(last), "m");
+  cli::print_final(options, "orientation error (angle of R R_d^T)", p2::orientation_angle(last), "rad");
+}
+
+/// hw2-p2, described once: cli::run_program() is its main.
+cli::ScenarioProgram<p2::Scenario> program() {
+  cli::ScenarioProgram<p2::Scenario> program;
+  program.name = "hw2-p2";
+  program.problem = "2";
+  program.heading = std::string("problem 2, iiwa position + Euler-parameter tracking (") + OPSPACE_GRADED_LIBRARY + ")";
+  program.duration = p2::kDefaultDuration;
+  program.usage = &usage;
+  program.scenario = [] { return p2::Scenario{&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration}; };
+  program.summary = &print_summary;
+  program.finals = &print_finals;
+  program.figures = [](const p2::Result& r, const p2::Scenario&) { return p2::figures(r); };
+  program.replay_scene = [](const p2::Result& r, const p2::Scenario&) { return p2::replay_scene(r); };
+#ifdef OPSPACE_LIVE
+  program.lab = [](const std::string& name) {
+    return std::make_unique<opspace::live::P2Lab>(name, &opspace::hw2::p2::control,
+                                                  &opspace::hw2::p2::desired_acceleration);
+  };
+#endif
+  return program;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return cli::run_program(argc, argv, program()); }
