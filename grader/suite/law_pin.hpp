@@ -30,7 +30,7 @@ namespace opspace::grading {
 
 /// A torque that differs from the law's by more than this share of the law's own torque
 /// (max |tau_i|, at least 1 N m) at some tick is a different law. Measured on the catalogue
-/// (problems/*/grade/mistakes.cpp, docs/grader.md's rubric), the largest share over each mistake's
+/// (problems/*/grade/mistakes.cpp, each guide's rubric), the largest share over each mistake's
 /// run: a term left out, replaced or aimed elsewhere differs by 2.9 % (problem 2's feed-forward
 /// left out, beside the iiwa's gravity torque) to 510 % (1b's PART3 projector without I -); a
 /// term of the law evaluated at a nearby point (E^+ at lambda_d, where the run keeps lambda within a

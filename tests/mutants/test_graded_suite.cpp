@@ -104,7 +104,7 @@ std::map<std::string, std::string> short_names(const grading::Problem& problem) 
   return out;
 }
 
-// A row of docs/grader.md's rubric without its last column (why): "| key | mistake | tests (lost of
+// A row of a problem's rubric (its guide) without its last column (why): "| key | mistake | tests (lost of
 // total) |", for `mistake` of `problem` that lost the tests `failed`.
 std::string rubric_row(const grading::Problem& problem, const grading::Mistake& mistake, const std::set<std::string>& failed) {
   const std::map<std::string, std::string> names = short_names(problem);
@@ -122,16 +122,19 @@ std::string rubric_row(const grading::Problem& problem, const grading::Mistake& 
          grading::format_points(total) + ") |";
 }
 
-// The rubric's rows in docs/grader.md, between its markers, each without its last column.
+// The rubric's rows in each problem's guide (problems/<key>/guide.md, between its markers), each
+// without its last column.
 std::set<std::string> documented_rubric() {
-  std::ifstream in(OPSPACE_GRADER_DOC);
   std::set<std::string> rows;
-  bool inside = false;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("<!-- rubric", 0) == 0) inside = line.find("end") == std::string::npos;
-    if (!inside || line.rfind("| ", 0) != 0 || line.rfind("| problem", 0) == 0) continue;
-    const std::size_t why = line.rfind(" | ", line.size() - 3);  // the last column's separator
-    rows.insert(line.substr(0, why + 2));
+  for (const grading::Problem& problem : grading::graded_suite()) {
+    std::ifstream in(std::string(OPSPACE_PROBLEMS_DIR) + "/" + problem.key + "/guide.md");
+    bool inside = false;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("<!-- rubric", 0) == 0) inside = line.find("end") == std::string::npos;
+      if (!inside || line.rfind("| ", 0) != 0 || line.rfind("| problem", 0) == 0) continue;
+      const std::size_t why = line.rfind(" | ", line.size() - 3);  // the last column's separator
+      rows.insert(line.substr(0, why + 2));
+    }
   }
   return rows;
 }
@@ -166,7 +169,7 @@ TEST_CASE("the grader's own reference (its oracles) earns full marks on every gr
 
 // One grading per mistake answers both questions (the tests it loses, the line that names it):
 // the grading with the catalogue scores as the one without does, and it took two of them.
-// The same grading also holds docs/grader.md's rubric to what it measured: each mistake's row names
+// The same grading also holds each problem's rubric (its guide) to what it measured: each mistake's row names
 // the tests it lost and the points (issue 46).
 TEST_CASE("each known mistake loses exactly the tests aimed at it and, made alone, is named in the report") {
   std::uint64_t identity = 100;
@@ -186,7 +189,7 @@ TEST_CASE("each known mistake loses exactly the tests aimed at it and, made alon
     CHECK(failed == expected_failed);
     CHECK(named == std::set<std::string>{expected});
     const std::string row = rubric_row(problem_of(suite, mistake), mistake, failed);
-    INFO("its row in docs/grader.md's rubric, up to the last column (why): " << row);
+    INFO("its row in its problem's rubric (problems/<key>/guide.md), up to the last column (why): " << row);
     CHECK(rubric.count(row) == 1);
     // Its results.json (issue 41): valid, under Gradescope's 1 MB, no raw < or > in a text, and
     // every test it is named for tagged with it. Seen to fail with the tags left out.
@@ -206,7 +209,7 @@ TEST_CASE("each known mistake loses exactly the tests aimed at it and, made alon
   }
 }
 
-TEST_CASE("docs/grader.md's rubric has a row for each known mistake and no other") {
+TEST_CASE("each problem's guide has a rubric row for each of its known mistakes and no other") {
   const std::vector<grading::Problem> suite = grading::graded_suite();
   std::set<std::string> whats;
   for (const grading::Mistake& mistake : grading::all_mistakes()) {

@@ -3,7 +3,7 @@
 // simulated test pins the law at every tick of the run (law_pin.hpp): a different law (a term
 // left out or replaced) costs all five of them, whatever the run's behaviour; a slip of one of
 // the law's terms that moves nothing a test judges costs the law test alone. The comments say
-// what the run shows; docs/grader.md's rubric lists the points each costs.
+// what the run shows; its rubric (guide.md) lists the points each costs.
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/hw2/p2.hpp>
 #include <opspace/math/constants.hpp>

@@ -2,7 +2,7 @@
 // test pins the law at every tick of the run (law_pin.hpp): a mistake that makes the run's
 // torque a different law costs all five of them, whatever the run's behaviour; one that leaves
 // the run's torque the law's (F_d without Omega-bar, with the run's F_d along x) costs the law
-// test alone. docs/grader.md's rubric lists the points each costs.
+// test alone. its rubric (guide.md) lists the points each costs.
 #include <opspace/algorithms/euler_params.hpp>
 #include <opspace/hw2/p3.hpp>
 
