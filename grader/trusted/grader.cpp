@@ -15,10 +15,11 @@
 #include <random>
 #include <thread>
 
+#include "graded_suite.hpp"
 #include "grading_group.hpp"
 #include "interrupt.hpp"
 #include "mistakes.hpp"
-#include "reference_runs.hpp"
+#include "reference_store.hpp"
 #include "remote_api.hpp"
 #include "report_html.hpp"
 #include "runner_build.hpp"
@@ -26,7 +27,6 @@
 #include "runner_process.hpp"
 #include "sandbox.hpp"
 #include "student_text.hpp"
-#include "suite.hpp"
 
 namespace opspace::grading {
 
