@@ -73,9 +73,9 @@ void plan_namespaces(ChildPlan& plan, const SandboxSpec& spec, unsigned long fla
   if (plan.mount_namespace) sandbox_internal::plan_root(plan, spec);
 }
 
-// clone() with `flags`, the child running the plan up to execve(). Under the programs' lock, so
-// that the pid is among the live programs before anyone may kill them all. -1 and its `error`
-// (errno) if it failed.
+// clone() with `flags`, the child running the plan up to execve(). Under the programs' lock: the
+// pid is among the live programs before another thread's search for orphans can see the child
+// (sandbox_programs.cpp). -1 and its `error` (errno) if it failed.
 long clone_child(ChildPlan& plan, unsigned long flags, int& error) {
   std::fflush(nullptr);
   const std::lock_guard<std::mutex> hold(programs_lock());
