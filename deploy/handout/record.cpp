@@ -14,7 +14,7 @@
 #include "protocol/codec.hpp"
 #include "protocol/protocol.hpp"
 #include "recorded.hpp"
-#include "suite.hpp"
+#include "graded_suite.hpp"
 
 namespace {
 

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "grading.hpp"
-#include "reference_runs.hpp"  // reference_statistic(), for the Judgements it gates
+#include "reference_store.hpp"  // reference_statistic(), for the Judgements it gates
 
 namespace opspace::grading {
 

@@ -88,7 +88,7 @@ Series decimate(const Samples& samples, Value value, const RunFigure& f = {}) {
 
 /// The figure of `quantity` in the student's run `mine` (its samples), whose reference series
 /// is `reference_key` of the reference's run, made from the reference's samples (given by
-/// `reference`) only when the report needs it (reference_runs.hpp: a passed test's figure
+/// `reference`) only when the report needs it (reference_store.hpp: a passed test's figure
 /// shows it when it is known already).
 template <class Samples, class Value, class Reference>
 RunFigure run_figure(RunFigure figure, const Samples& mine, Value value, std::string reference_key, Reference reference) {

@@ -1,4 +1,4 @@
-#include "suite.hpp"
+#include "graded_suite.hpp"
 
 namespace opspace::grading {
 

@@ -15,10 +15,11 @@
 #include <random>
 #include <thread>
 
+#include "graded_suite.hpp"
 #include "grading_group.hpp"
 #include "interrupt.hpp"
 #include "mistakes.hpp"
-#include "reference_runs.hpp"
+#include "reference_store.hpp"
 #include "remote_api.hpp"
 #include "report_html.hpp"
 #include "runner_build.hpp"
@@ -26,7 +27,6 @@
 #include "runner_process.hpp"
 #include "sandbox.hpp"
 #include "student_text.hpp"
-#include "suite.hpp"
 
 namespace opspace::grading {
 
@@ -254,6 +254,154 @@ std::vector<Graded> grade_all(const std::vector<const Problem*>& chosen, const s
   return graded;
 }
 
+// Why the code graded would run with this grader's rights here, in words for the report; empty
+// where the sandbox holds whole. `missing` names what the sandbox lacks when it is incomplete.
+std::string unprotected_reason(const GraderOptions& options, const Account& account, std::string& missing) {
+  if (!options.isolate) return "the sandbox is off (--no-isolation)";
+  if (sandbox_complete(account, missing)) return "";
+  return "the sandbox is incomplete here (missing: " + missing + ")";
+}
+
+// The sandbox must hold whole before anyone's code is compiled or run: where it cannot (no
+// namespaces), the code graded would run with the grader's rights, next to other students'
+// files and grades. Only an explicit --unprotected grades there, and every report says so
+// (`unprotected`, set here). False, said, where the grader refuses.
+bool may_grade_here(const GraderOptions& options, const Account& account, const char* program,
+                    std::string& unprotected) {
+  std::string missing;
+  unprotected = unprotected_reason(options, account, missing);
+  if (missing.empty() || options.allow_unprotected || options.check_sandbox) return true;
+  std::cerr << program << ": refused: the sandbox cannot be built here (missing: " << missing
+            << "), so the code graded would run with this grader's rights. Grade your own files with "
+               "--unprotected (scripts/grade does); grade others' only where the sandbox holds (docs/grader.md)\n";
+  return false;
+}
+
+// --check-sandbox: what holds here, the sandbox and each of the grading's groups; 0 if whole.
+int print_sandbox_check(const GradingGroups& groups, const std::string& unprotected) {
+  std::cout << (unprotected.empty() ? "sandbox: complete" : "sandbox: " + unprotected) << "\n"
+            << "cpu share: "
+            << (groups.cpu.empty() ? "no writable cgroup here: each test's limit counts the runner's CPU time"
+                                   : "a group per grading, " + groups.cpu)
+            << "\nmemory budget: "
+            << (groups.memory.empty() ? "no writable memory cgroup here: each program's address space is capped"
+                                      : "a group per grading, " + groups.memory)
+            << "\nprocess budget: "
+            << (groups.pids.empty() ? "no writable pids cgroup here: each program's account limits its processes"
+                                    : "a group per grading, " + groups.pids)
+            << "\n";
+  return unprotected.empty() ? 0 : kExitUnprotected;
+}
+
+// A seed for this grading's random inputs, 1 to 10^9 (short enough to type after --seed).
+std::uint64_t drawn_seed() {
+  std::random_device device;
+  return (static_cast<std::uint64_t>(device()) << 20 ^ device()) % 1000000000ull + 1;
+}
+
+// The problems of `suite` that --problem chose (all without it), in the suite's order.
+std::vector<const Problem*> chosen_problems(const std::vector<Problem>& suite, const std::string& only) {
+  std::vector<const Problem*> chosen;
+  for (const Problem& problem : suite)
+    if (only.empty() || problem.key == only) chosen.push_back(&problem);
+  return chosen;
+}
+
+// One line per exercise file: built, reused from the cache, or not built.
+void print_built(const std::vector<const Problem*>& chosen, const std::vector<BuiltRunner>& built) {
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    std::cerr << "  exercises/" << file_of(chosen[i]->key) << ": "
+              << (!built[i].ok ? "not built (the report says why)"
+                  : built[i].cached ? "unchanged since it was last built by this grader: its runner is reused"
+                                    : "compiled")
+              << "\n";
+  }
+}
+
+// The grades in the report's order, and the protections the report states: the first problem's
+// whose runner started.
+struct Grades {
+  std::vector<ProblemResult> results;
+  Protections protections;
+  bool started = false;
+};
+
+Grades in_report_order(std::vector<Graded>& graded) {
+  Grades out;
+  for (Graded& g : graded) {
+    out.results.push_back(std::move(g.result));
+    if (g.started && !out.started) out.protections = g.protections;
+    out.started |= g.started;
+  }
+  return out;
+}
+
+// Grades `chosen` with their runners in a folder of /tmp made for this grading, removed after
+// with every process of the grading's account. False, said, if the folder cannot be made.
+bool grade_in_run_folder(const std::vector<const Problem*>& chosen, const std::vector<BuiltRunner>& built,
+                         const GraderOptions& options, const Account& account, Grades& grades) {
+  std::unique_ptr<TemporaryFolder> run_folder;
+  try {
+    run_folder = std::make_unique<TemporaryFolder>("/tmp/opspace-runners-");
+  } catch (const std::exception& e) {
+    std::cerr << "hw2-grade: " << e.what() << "\n";
+    return false;
+  }
+  const std::string run_dir = run_folder->path();
+  chmod(run_dir.c_str(), 0755);
+  const unsigned jobs = options.jobs > 0 ? options.jobs : jobs_by_default(options.isolate && account.uid != 0);
+  if (jobs > 1 && chosen.size() > 1)
+    std::cerr << "grading " << std::min<std::size_t>(jobs, chosen.size()) << " problems at a time\n";
+  std::vector<Graded> graded = grade_all(chosen, built, run_dir, options, account, jobs);
+  grades = in_report_order(graded);
+  run_folder.reset();
+  kill_account(account);
+  return true;
+}
+
+// The lines under the report: the times, the seed that replays the inputs, and what of the
+// sandbox did not hold.
+void print_footer(const GraderOptions& options, const Grades& grades, double build_seconds, double grading_seconds) {
+  std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,
+              grading_seconds, static_cast<unsigned long long>(options.seed),
+              static_cast<unsigned long long>(options.seed));
+  if (!options.isolate) {
+    std::printf("Sandbox: off (--no-isolation)\n");
+  } else if (grades.started && !grades.protections.missing().empty()) {
+    std::printf("Sandbox: these protections were not available here: %s (docs/grader.md)\n",
+                grades.protections.missing().c_str());
+  }
+  std::fflush(stdout);
+}
+
+// The files the options ask for: results.json (--gradescope), JUnit XML (--junit), the report's
+// page (--html). False if one could not be written.
+bool write_results_files(const GraderOptions& options, const std::vector<ProblemResult>& results, double seconds,
+                         bool unprotected) {
+  bool written = true;
+  if (!options.gradescope_path.empty()) {
+    written &= write_file(options.gradescope_path, "results.json",
+                          [&](std::ostream& out) {
+                            write_gradescope(out, results, seconds,
+                                             {options.hidden, options.hidden_as, options.seed, options.gradescope_format,
+                                              unprotected});
+                          });
+  }
+  if (!options.junit_path.empty()) {
+    written &= write_file(options.junit_path, "JUnit XML", [&](std::ostream& out) { write_junit(out, results, seconds); });
+  }
+  if (!options.html_path.empty()) {
+    std::error_code ec;  // a folder that cannot be made: write_file says the page cannot be written
+    fs::create_directories(fs::path(options.html_path).parent_path(), ec);
+    const bool page = write_file(options.html_path, "the report's page", [&](std::ostream& out) {
+      write_html_report(out, results, options.hidden, options.seed);
+    });
+    if (page) std::cout << "open " << shown_path(options.html_path) << "\n";
+    written &= page;
+  }
+  return written;
+}
+
 }  // namespace
 
 int grader_main(int argc, char** argv, const std::string& default_exercises) {
@@ -278,45 +426,14 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
     std::cerr << argv[0] << ": " << e.what() << "\n";
     return 2;
   }
-  // The sandbox must hold whole before anyone's code is compiled or run: where it cannot (no
-  // namespaces), the code graded would run with the grader's rights, next to other students'
-  // files and grades. Only an explicit --unprotected grades there, and every report says so.
   std::string unprotected;
-  if (!options.isolate) {
-    unprotected = "the sandbox is off (--no-isolation)";
-  } else if (std::string missing; !sandbox_complete(account, missing)) {
-    if (!options.allow_unprotected && !options.check_sandbox) {
-      std::cerr << argv[0] << ": refused: the sandbox cannot be built here (missing: " << missing
-                << "), so the code graded would run with this grader's rights. Grade your own files with "
-                   "--unprotected (scripts/grade does); grade others' only where the sandbox holds (docs/grader.md)\n";
-      return kExitUnprotected;
-    }
-    unprotected = "the sandbox is incomplete here (missing: " + missing + ")";
-  }
-  if (options.check_sandbox) {
-    std::cout << (unprotected.empty() ? "sandbox: complete" : "sandbox: " + unprotected) << "\n"
-              << "cpu share: "
-              << (groups.cpu.empty() ? "no writable cgroup here: each test's limit counts the runner's CPU time"
-                                     : "a group per grading, " + groups.cpu)
-              << "\nmemory budget: "
-              << (groups.memory.empty() ? "no writable memory cgroup here: each program's address space is capped"
-                                        : "a group per grading, " + groups.memory)
-              << "\nprocess budget: "
-              << (groups.pids.empty() ? "no writable pids cgroup here: each program's account limits its processes"
-                                      : "a group per grading, " + groups.pids)
-              << "\n";
-    return unprotected.empty() ? 0 : kExitUnprotected;
-  }
-  if (options.seed == 0) {
-    std::random_device device;
-    options.seed = (static_cast<std::uint64_t>(device()) << 20 ^ device()) % 1000000000ull + 1;
-  }
+  if (!may_grade_here(options, account, argv[0], unprotected)) return kExitUnprotected;
+  if (options.check_sandbox) return print_sandbox_check(groups, unprotected);
+  if (options.seed == 0) options.seed = drawn_seed();
   set_run_seed(options.seed);
 
   const std::vector<Problem> suite = graded_suite();
-  std::vector<const Problem*> chosen;
-  for (const Problem& problem : suite)
-    if (options.only_problem.empty() || problem.key == options.only_problem) chosen.push_back(&problem);
+  const std::vector<const Problem*> chosen = chosen_problems(suite, options.only_problem);
   if (chosen.empty()) {
     std::cerr << argv[0] << ": no problem '" << options.only_problem << "'\n";
     return grader_usage(std::cerr, argv[0], kDefaultTimeout, 2);
@@ -341,74 +458,16 @@ int grader_main(int argc, char** argv, const std::string& default_exercises) {
   const BuildSettings settings{cache_dir, account, options.isolate, 180.0};
   const std::vector<BuiltRunner> built = build_all(chosen, toolchain, options, settings);
   const double build_seconds = since(start);
-  for (std::size_t i = 0; i < chosen.size(); ++i) {
-    std::cerr << "  exercises/" << file_of(chosen[i]->key) << ": "
-              << (!built[i].ok ? "not built (the report says why)"
-                  : built[i].cached ? "unchanged since it was last built by this grader: its runner is reused"
-                                    : "compiled")
-              << "\n";
-  }
+  print_built(chosen, built);
 
-  std::unique_ptr<TemporaryFolder> run_folder;
-  try {
-    run_folder = std::make_unique<TemporaryFolder>("/tmp/opspace-runners-");
-  } catch (const std::exception& e) {
-    std::cerr << "hw2-grade: " << e.what() << "\n";
-    return 1;
-  }
-  const std::string run_dir = run_folder->path();
-  chmod(run_dir.c_str(), 0755);
-  const unsigned jobs = options.jobs > 0 ? options.jobs : jobs_by_default(options.isolate && account.uid != 0);
-  if (jobs > 1 && chosen.size() > 1)
-    std::cerr << "grading " << std::min<std::size_t>(jobs, chosen.size()) << " problems at a time\n";
   const auto grading_start = std::chrono::steady_clock::now();
-  std::vector<Graded> graded = grade_all(chosen, built, run_dir, options, account, jobs);
-  std::vector<ProblemResult> results;
-  Protections protections;  // the first problem's, in the report's order, whose runner started
-  bool started = false;
-  for (Graded& g : graded) {
-    results.push_back(std::move(g.result));
-    if (g.started && !started) protections = g.protections;
-    started |= g.started;
-  }
-  run_folder.reset();
-  kill_account(account);
+  Grades grades;
+  if (!grade_in_run_folder(chosen, built, options, account, grades)) return 1;
   std::cerr << prune_runner_cache(cache_dir, options.cache_mib << 20).line(options.cache_mib << 20) << "\n";
   const double grading_seconds = since(grading_start), seconds = since(start);
-  print_report(std::cout, results, options.hidden, options.seed);
-  std::printf("Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n", build_seconds,
-              grading_seconds, static_cast<unsigned long long>(options.seed),
-              static_cast<unsigned long long>(options.seed));
-  if (!options.isolate) {
-    std::printf("Sandbox: off (--no-isolation)\n");
-  } else if (started && !protections.missing().empty()) {
-    std::printf("Sandbox: these protections were not available here: %s (docs/grader.md)\n",
-                protections.missing().c_str());
-  }
-  std::fflush(stdout);
-
-  bool written = true;
-  if (!options.gradescope_path.empty()) {
-    written &= write_file(options.gradescope_path, "results.json",
-                          [&](std::ostream& out) {
-                            write_gradescope(out, results, seconds,
-                                             {options.hidden, options.hidden_as, options.seed, options.gradescope_format,
-                                              !unprotected.empty()});
-                          });
-  }
-  if (!options.junit_path.empty()) {
-    written &= write_file(options.junit_path, "JUnit XML", [&](std::ostream& out) { write_junit(out, results, seconds); });
-  }
-  if (!options.html_path.empty()) {
-    std::error_code ec;  // a folder that cannot be made: write_file says the page cannot be written
-    fs::create_directories(fs::path(options.html_path).parent_path(), ec);
-    const bool page = write_file(options.html_path, "the report's page", [&](std::ostream& out) {
-      write_html_report(out, results, options.hidden, options.seed);
-    });
-    if (page) std::cout << "open " << shown_path(options.html_path) << "\n";
-    written &= page;
-  }
-  return written ? 0 : 1;
+  print_report(std::cout, grades.results, options.hidden, options.seed);
+  print_footer(options, grades, build_seconds, grading_seconds);
+  return write_results_files(options, grades.results, seconds, !unprotected.empty()) ? 0 : 1;
 }
 
 }  // namespace opspace::grading

@@ -8,7 +8,7 @@
 
 #include "diagnosis.hpp"
 #include "mistakes.hpp"
-#include "reference_runs.hpp"
+#include "reference_store.hpp"
 #include "runner_process.hpp"
 #include "student_text.hpp"
 

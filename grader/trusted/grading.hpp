@@ -48,7 +48,7 @@ struct RunFigure {
   double verdict_yours = std::numeric_limits<double>::quiet_NaN();
   double verdict_reference = std::numeric_limits<double>::quiet_NaN();
   Series student;           ///< the run of the code graded
-  Series reference;         ///< the run of the problem set's law, same scenario (reference_runs.hpp)
+  Series reference;         ///< the run of the problem set's law, same scenario (reference_store.hpp)
   std::string reference_key;              ///< names the reference's series among all runs'
   std::function<Series()> make_reference;  ///< runs the law for it, when it is not known yet
 };

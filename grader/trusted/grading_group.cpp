@@ -21,6 +21,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "process_ended.hpp"
+
 namespace opspace::grading {
 
 namespace {
@@ -88,7 +90,7 @@ void remove_stale(const std::string& parent) {
     const std::string name = entry->d_name;
     if (name.compare(0, std::char_traits<char>::length(kPrefix), kPrefix) != 0) continue;
     const long pid = std::strtol(name.c_str() + std::char_traits<char>::length(kPrefix), nullptr, 10);
-    if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) rmdir((parent + "/" + name).c_str());
+    if (process_ended(pid)) rmdir((parent + "/" + name).c_str());
   }
   closedir(dir);
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "suite.hpp"
+#include "graded_suite.hpp"
 
 namespace opspace::grading {
 

@@ -23,6 +23,7 @@
 #include "runner_process.hpp"
 #include "sandbox.hpp"
 #include "sha256.hpp"
+#include "size_text.hpp"
 #include "student_text.hpp"
 
 namespace opspace::grading {
@@ -40,17 +41,6 @@ bool stop(BuiltRunner& built, Fault fault, std::string error) {
   built.fault = fault;
   built.error = std::move(error);
   return false;
-}
-
-// "64 MiB", "64.1 MiB", "12 KiB", "900 bytes": a size for the student, rounded up, so that a
-// size over a bound never reads as the bound.
-std::string size_text(std::size_t bytes) {
-  const bool mib = bytes >= (1u << 20), kib = bytes >= (1u << 10);
-  if (!mib && !kib) return std::to_string(bytes) + " bytes";
-  const double tenths = std::ceil(static_cast<double>(bytes) / (mib ? 1u << 20 : 1u << 10) * 10.0);
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f %s", std::fmod(tenths, 10.0) == 0.0 ? 0 : 1, tenths / 10.0, mib ? "MiB" : "KiB");
-  return text;
 }
 
 void make_owned(const std::string& path, const Account& account) {

@@ -4,7 +4,6 @@
 #include "runner_cache.hpp"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -18,6 +17,9 @@
 #include <system_error>
 #include <vector>
 
+#include "process_ended.hpp"
+#include "size_text.hpp"
+
 namespace fs = std::filesystem;
 
 namespace opspace::grading {
@@ -25,8 +27,6 @@ namespace opspace::grading {
 namespace {
 
 bool starts_with(const std::string& text, const std::string& prefix) { return text.compare(0, prefix.size(), prefix) == 0; }
-
-bool ended(long pid) { return pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH; }
 
 // The pid a leftover's name carries after `marker` ("held-42-1b", "x.tmp42"), or 0.
 long pid_after(const std::string& name, const std::string& marker) {
@@ -44,12 +44,6 @@ unsigned long long size_of(const fs::path& path) {
   std::error_code ec;
   const auto size = fs::file_size(path, ec);
   return ec ? 0 : size;
-}
-
-std::string mib_text(unsigned long long bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f MiB", static_cast<double>(bytes) / (1 << 20));
-  return text;
 }
 
 }  // namespace
@@ -70,8 +64,9 @@ CacheState prune_runner_cache(const std::string& cache_dir, unsigned long long b
   const std::string own = "held-" + std::to_string(getpid()) + "-";
   for (const fs::directory_entry& file : fs::directory_iterator(cache_dir, ec)) {
     const std::string name = file.path().filename().string();
-    const bool leftover = (starts_with(name, "held-") && (starts_with(name, own) || ended(pid_after(name, "held-")))) ||
-                          (name.find(".tmp") != std::string::npos && ended(pid_after(name, ".tmp")));
+    const bool held = starts_with(name, "held-") && (starts_with(name, own) || process_ended(pid_after(name, "held-")));
+    const bool unfinished = name.find(".tmp") != std::string::npos && process_ended(pid_after(name, ".tmp"));
+    const bool leftover = held || unfinished;
     if (leftover) {
       fs::remove(file.path(), ec);
     } else if (starts_with(name, "runner-") && name.find('.') == std::string::npos) {
@@ -94,9 +89,9 @@ CacheState prune_runner_cache(const std::string& cache_dir, unsigned long long b
 }
 
 std::string CacheState::line(unsigned long long bound_bytes) const {
-  std::string text = "runner cache: " + std::to_string(runners) + " runner(s), " + mib_text(bytes) + " of its " +
-                     mib_text(bound_bytes) + " bound";
-  if (pruned > 0) text += "; " + std::to_string(pruned) + " least recently used removed (" + mib_text(pruned_bytes) + ")";
+  std::string text = "runner cache: " + std::to_string(runners) + " runner(s), " + size_text(bytes) + " of its " +
+                     size_text(bound_bytes) + " bound";
+  if (pruned > 0) text += "; " + std::to_string(pruned) + " least recently used removed (" + size_text(pruned_bytes) + ")";
   return text;
 }
 

@@ -23,7 +23,7 @@ std::string hold_runner(const std::string& cached, const std::string& cache_dir,
 struct CacheState {
   unsigned long long runners = 0, bytes = 0;        ///< kept
   unsigned long long pruned = 0, pruned_bytes = 0;  ///< removed now
-  std::string line(unsigned long long bound_bytes) const;  ///< "runner cache: 12 runners, 1.0 MiB of its 1024 MiB ..."
+  std::string line(unsigned long long bound_bytes) const;  ///< "runner cache: 12 runner(s), 1.1 MiB of its 1024 MiB bound ..."
 };
 
 /// Removes this grading's links, what graders that have ended left behind (links, unfinished

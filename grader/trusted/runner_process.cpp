@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "answers.hpp"
+#include "answer_decoding.hpp"
 #include "grading_group.hpp"
 #include "student_text.hpp"
 

@@ -35,8 +35,9 @@ check="$repo/tests/deploy/check_json.cmake"
 seconds() { echo $(( $(date +%s) - $1 )); }
 images=${3:-$repo/build/autograder-images}
 options=(--hidden "in simulation")  # grader options pass through the bundle
-rm -rf "$work"
-mkdir -p "$work" "$images"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work"
+mkdir -p "$images"
 exec 9> "$images/lock"
 flock 9  # one run at a time sets up or uses an image
 bash "$repo/scripts/autograder" "$work/bundle" -- "${options[@]}"
@@ -75,7 +76,6 @@ rm -rf "$work"/submission-* "$work/stubs"
 
 stubs="$work/stubs"
 mkdir -p "$stubs"
-source "$repo/scripts/problems.sh"
 for key in "${OPSPACE_KEYS[@]}"; do git -C "$repo" show "HEAD:exercises/p$key.cpp" > "$stubs/p$key.cpp"; done
 
 # grade NAME: grades $work/NAME (the submission) and keeps its results as $work/NAME.json.

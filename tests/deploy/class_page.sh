@@ -15,13 +15,9 @@
 #   bash tests/deploy/class_page.sh REPO BUILD WORK
 set -euo pipefail
 repo=$1 build=$2 work=$3
-source "$repo/scripts/problems.sh"
-if ! opspace_stubs_untouched "$repo/exercises"; then
-  echo "SKIPPED: exercises/ have been edited (scripts/regrade grades a missing file as the shipped stub)"
-  exit 0
-fi
-rm -rf "$work"
-mkdir -p "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+skip_unless_stubs_untouched
+fresh_work "$work"
 bash "$repo/scripts/synthetic-class" --shared-files "$work/in" 12 7 "$work/manifest"
 script='<script>alert(1)' img='<img src=x onerror=alert(2)>'
 mv "$work/in/learner-001" "$work/in/$script"

@@ -6,8 +6,8 @@
 #   bash tests/deploy/handout.sh REPO WORK
 set -euo pipefail
 repo=$1 work=$2
-rm -rf "$work"
-mkdir -p "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work"
 start=$(date +%s)
 bash "$repo/scripts/handout" "$work/handout"
 cd "$work/handout"

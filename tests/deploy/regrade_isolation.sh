@@ -12,13 +12,9 @@
 set -euo pipefail
 repo=$1 work=$2 limit=${3:-10}
 check="$repo/tests/deploy/check_json.cmake"
-source "$repo/scripts/problems.sh"
-rm -rf "$work"
-mkdir -p "$work/in/alice" "$work/in/bob" "$work/out"
-if ! opspace_stubs_untouched "$repo/exercises"; then
-  echo "SKIPPED: exercises/ have been edited (scripts/regrade grades a missing file as the shipped stub)"
-  exit 0
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+skip_unless_stubs_untouched
+fresh_work "$work" in/alice in/bob out
 cp "$repo"/solutions/p*.cpp "$work/in/alice/"
 cp "$repo"/solutions/p*.cpp "$work/in/bob/"
 out="$(cd "$work/out" && pwd)"

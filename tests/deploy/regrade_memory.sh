@@ -9,14 +9,9 @@
 #   bash tests/deploy/regrade_memory.sh REPO GRADER WORK
 set -euo pipefail
 repo=$1 grader=$2 work=$3
-source "$repo/scripts/problems.sh"
-if ! opspace_stubs_untouched "$repo/exercises"; then
-  echo "SKIPPED: exercises/ have been edited (scripts/regrade grades a missing file as the shipped stub)"
-  exit 0
-fi
-fail() { echo "FAIL: $*"; exit 1; }
-rm -rf "$work"
-mkdir -p "$work/in/carol" "$work/in/dave" "$work/alone"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+skip_unless_stubs_untouched
+fresh_work "$work" in/carol in/dave alone
 cp "$repo/solutions/p1b.cpp" "$work/in/carol/"
 {
   printf '#define X0 "%s"\n' "$(head -c 1000 /dev/zero | tr '\0' a)"

@@ -6,10 +6,9 @@
 #   bash tests/deploy/visible_bases.sh GRADER SOLUTIONS WORK
 set -euo pipefail
 grader=$1 solutions=$2 work=$3
-rm -rf "$work"
-mkdir -p "$work/right" "$work/wrong"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work" right wrong
 check="$(dirname "${BASH_SOURCE[0]}")/check_json.cmake"
-source "$(dirname "${BASH_SOURCE[0]}")/../../scripts/problems.sh"
 
 variant() {  # variant DIR BODY: the reference with singular_directions wrapped by BODY
   cp "$solutions"/p*.cpp "$1/"

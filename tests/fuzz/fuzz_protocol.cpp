@@ -1,5 +1,6 @@
-// libFuzzer target: the grader's reading of what a runner sends (grader/trusted/
-// answers.cpp, student_text.cpp's student_line()): arbitrary bytes as the answer to a request.
+// libFuzzer target: the grader's reading of what a runner sends
+// (grader/trusted/answer_decoding.cpp, student_text.cpp's student_line()): arbitrary bytes as
+// the answer to a request.
 // Input: one byte choosing the function asked (of protocol::kFunctions, every function in
 // the problems' tables' order), then a 16-byte answer header, then the payload.
 // check_answer() must accept only a header for request 1 with the exact size of that
@@ -17,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "answers.hpp"
+#include "answer_decoding.hpp"
 #include "student_text.hpp"
 #include "protocol/codec.hpp"
 #include "runner_process.hpp"

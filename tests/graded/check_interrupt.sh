@@ -7,7 +7,8 @@
 #   bash check_interrupt.sh GRADER SOLUTIONS HANGING_CASE WORK
 set -uo pipefail
 grader=$1 solutions=$2 hanging=$3 work=$4
-rm -rf "$work" && mkdir -p "$work/exercises" || exit 1
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work" exercises || exit 1
 cp "$solutions"/p*.cpp "$work/exercises/"
 sed 's/@FAULT@/hang/' "$hanging" > "$work/exercises/p1b.cpp"
 # The runners of grader $1: its children running runner-1b (read from /proc: procps may be absent).

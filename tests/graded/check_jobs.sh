@@ -11,12 +11,8 @@ set -euo pipefail
 grader=$1 repo=$2 work=$3
 seed=50  # any seed: both gradings draw the same inputs from it
 
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-rm -rf "$work"
-mkdir -p "$work/exercises"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work" exercises
 cp "$repo"/solutions/*.cpp "$work/exercises/"
 cp "$repo/tests/mutants/p1a_mass_no_coupling.cpp" "$work/exercises/p1a.cpp"
 cp "$repo/tests/mutants/p1b_part3_pinv.cpp" "$work/exercises/p1b.cpp"

@@ -26,13 +26,8 @@ set -euo pipefail
 grader=$1 repo=$2 work=$3 key=$4 mutant=$5 test_name=$6 quantity=$7 shows=$8 most=${9:-}
 seed=41  # any seed: the page's layout does not depend on it, and the simulated runs draw none
 
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-rm -rf "$work"
-mkdir -p "$work/exercises"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work" exercises
 cp "$repo"/solutions/*.cpp "$work/exercises/"
 cp "$mutant" "$work/exercises/p$key.cpp"
 "$grader" --unprotected --problem "$key" --exercises "$work/exercises" --seed "$seed" --html "$work/page/report.html" \

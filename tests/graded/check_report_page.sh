@@ -26,13 +26,8 @@ test_name="iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_
 quantity="PART3 tip error |x - x_d|"
 seed=41
 
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-rm -rf "$work"
-mkdir -p "$work/exercises" "$work/out"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work" exercises out
 cp "$repo"/solutions/*.cpp "$work/exercises/"
 cp "$repo/tests/mutants/p1b_part3_pinv.cpp" "$work/exercises/p1b.cpp"
 "$grader" --unprotected --problem 1b --exercises "$work/exercises" --seed "$seed" --html "$work/page/report.html" \

@@ -20,12 +20,8 @@ seeds=(41 42)  # any two seeds
 simulated="d. in simulation link7's origin follows the desired position within 1 mm RMS after 1 s"
 law="c. the controller applies J0^T"
 
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-rm -rf "$work"
-mkdir -p "$work/exercises"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work" exercises
 cp "$repo"/solutions/*.cpp "$work/exercises/"
 cp "$repo/tests/mutants/p2_no_feedforward.cpp" "$work/exercises/p2.cpp"
 for seed in "${seeds[@]}"; do

@@ -19,7 +19,7 @@
 #include "mistakes.hpp"
 #include "oracles.hpp"
 #include "report.hpp"
-#include "suite.hpp"
+#include "graded_suite.hpp"
 #include "tests/support/gradescope_html.hpp"
 
 namespace grading = opspace::grading;

@@ -7,9 +7,8 @@
 set -euo pipefail
 grader=$1 solutions=$2 stubs=$3 work=$4
 bound_mib=100
-rm -rf "$work"
-mkdir -p "$work"
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work"
 
 # Variant NAME: the reference's p1a with its own 48 MiB array, the other files the stubs.
 variant() {

@@ -8,9 +8,8 @@
 #   bash tests/tamper/check_runner_memory.sh GRADER SOLUTIONS WORK
 set -euo pipefail
 grader=$1 solutions=$2 work=$3
-fail() { echo "FAIL: $*"; exit 1; }
-rm -rf "$work"
-mkdir -p "$work/ex"
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+fresh_work "$work" ex
 cp "$solutions"/p*.cpp "$work/ex/"
 # The reference's p1a, its mass_matrix first touching every page of 768 MiB.
 {

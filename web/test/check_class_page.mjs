@@ -10,7 +10,7 @@
 // screenshot is of the mistakes table and the first three judged runs' plots. 1: a check
 // failed; 77: no Chromium.
 import { pathToFileURL } from 'node:url';
-import { checker, launch, openPage } from './chromium.mjs';
+import { checkInPage, offline } from './chromium.mjs';
 
 const [page_file, screenshot] = process.argv.slice(2);
 if (!page_file || !screenshot) {
@@ -18,12 +18,9 @@ if (!page_file || !screenshot) {
   process.exit(2);
 }
 
-const { check, failures } = checker();
-const browser = await launch();
-try {
-  const { page, errors } = await openPage(browser, { width: 1400, height: 1000 });
+await checkInPage({ width: 1400, height: 1000 }, async ({ page, errors, check }) => {
   const url = pathToFileURL(page_file).href;
-  await page.route('**/*', (route) => (route.request().url() === url ? route.continue() : route.abort()));
+  await offline(page, url);
   // A script of the page's own would set this; a student's injected one would too.
   await page.addInitScript(() => { window.__alerts = 0; window.alert = () => { window.__alerts += 1; }; });
   const start = Date.now();
@@ -62,7 +59,4 @@ try {
     return f ? f.getBoundingClientRect().bottom + window.scrollY : 1000;
   });
   await page.screenshot({ path: screenshot, fullPage: true, clip: { x: 0, y: top, width: 1400, height: Math.max(200, bottom - top) } });
-} finally {
-  await browser.close();
-}
-process.exit(failures.length ? 1 : 0);
+});

@@ -7,7 +7,7 @@
 import { execFileSync } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
-import { checker, launch, openPage } from './chromium.mjs';
+import { checkInPage, definePixelTools } from './chromium.mjs';
 
 const [page_file, native, artefacts] = process.argv.slice(2);
 if (!page_file || !native || !artefacts) {
@@ -15,8 +15,6 @@ if (!page_file || !native || !artefacts) {
   process.exit(2);
 }
 mkdirSync(artefacts, { recursive: true });
-
-const { check, failures } = checker();
 
 /// The largest difference between two view results, |a - b| / max(1, |a|), walking both.
 /// Directions (the columns of 'axes', each 'u') are defined up to sign: each is compared with
@@ -52,9 +50,8 @@ function difference(a, b, path = '', key = '') {
   return worst;
 }
 
-const browser = await launch();
-try {
-  const { page, errors } = await openPage(browser, { width: 1400, height: 900 });
+await checkInPage({ width: 1400, height: 900 }, async ({ page, errors, check }) => {
+  await definePixelTools(page);
   await page.goto(pathToFileURL(page_file).href);
   await page.waitForFunction(() => window.opspaceExplorer && window.opspaceExplorer.ready, null, { timeout: 60000 });
   const robots = await page.evaluate(() => window.opspaceExplorer.robots);
@@ -117,14 +114,7 @@ try {
   const pixels = await page.evaluate(() => {
     const api = window.opspaceExplorer;
     const canvas = document.getElementById('canvas');
-    const grab = () => {
-      const c = document.createElement('canvas');
-      c.width = canvas.width;
-      c.height = canvas.height;
-      const ctx = c.getContext('2d');
-      ctx.drawImage(canvas, 0, 0);
-      return ctx.getImageData(0, 0, c.width, c.height).data;
-    };
+    const grab = () => window.opspaceTest.pixels(canvas);
     api.setRobotVisible(false);
     const before = grab();
     const q1 = parseFloat(document.getElementById('q1').value);
@@ -133,9 +123,7 @@ try {
     const after = grab();
     api.setRobotVisible(true);
     let changed = 0;
-    for (let i = 0; i < before.length; i += 4) {
-      if (Math.abs(before[i] - after[i]) + Math.abs(before[i + 1] - after[i + 1]) + Math.abs(before[i + 2] - after[i + 2]) > 24) ++changed;
-    }
+    for (let i = 0; i < before.length / 4; ++i) if (window.opspaceTest.differs(before, after, i)) ++changed;
     return { changed: changed / (before.length / 4) };
   });
   check(pixels.changed > 0.005, `moving joint 2 of the iiwa changes ${(100 * pixels.changed).toFixed(2)} % of the canvas's pixels with the robot hidden in the top view (> 0.5 %)`);
@@ -165,10 +153,4 @@ try {
   await page.locator('#self-s').fill('0.6');
   await page.screenshot({ path: `${artefacts}/explorer-puma.png` });
   check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
-} finally {
-  await browser.close();
-}
-if (failures.length) {
-  console.log(`${failures.length} check(s) failed`);
-  process.exit(1);
-}
+});

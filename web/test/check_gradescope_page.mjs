@@ -13,7 +13,7 @@
 // student's (a tag in a text) was rendered. 1: a check failed; 77: no Chromium.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
-import { checker, launch, openPage } from './chromium.mjs';
+import { checkInPage, offline } from './chromium.mjs';
 
 const [results_file, screenshot, focus] = process.argv.slice(2);
 if (!results_file || !screenshot) {
@@ -85,12 +85,9 @@ const data = JSON.stringify(results.tests.map(({ name, status, score, max_score,
 const file = `${screenshot}.page.html`;
 writeFileSync(file, page_html.replace('<script>', `<script id="data" type="application/json">${data}</script><script>`));
 
-const { check, failures } = checker();
-const browser = await launch();
-try {
-  const { page, errors } = await openPage(browser, { width: 1000, height: 900 });
+await checkInPage({ width: 1000, height: 900 }, async ({ page, errors, check }) => {
   const url = pathToFileURL(file).href;
-  await page.route('**/*', (route) => (route.request().url() === url ? route.continue() : route.abort()));
+  await offline(page, url);
   await page.goto(url);
   await page.evaluate(() => Promise.all([...document.images].map((i) => i.decode().catch(() => {}))));
   const removed = await page.evaluate(() => window.removed);
@@ -113,7 +110,4 @@ try {
   check(errors.length === 0, `no console error or refused request${errors.length ? `: ${errors.join('; ')}` : ''}`);
   const target = focus ? page.locator(`section[data-name="${focus.replace(/"/g, '\\"')}"]`) : page.locator('body');
   await target.screenshot({ path: screenshot });
-} finally {
-  await browser.close();
-}
-process.exit(failures.length ? 1 : 0);
+});

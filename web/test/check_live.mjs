@@ -94,6 +94,7 @@ try {
   console.log(`live page: ${live.url}`);
   browser = await helpers.launch();
   const { page, errors } = await helpers.openPage(browser, { width: 1280, height: 800 });
+  await helpers.definePixelTools(page);
   await page.goto(live.url);
   const ready = await page.waitForFunction(() => window.opspaceLive && window.opspaceLive.ready, null, { timeout: 30000 })
     .then(() => true, () => false);
@@ -141,14 +142,7 @@ try {
   // them (a swinging arm can pass through the same pose twice).
   const { changed, pixels } = await page.evaluate(async () => {
     const canvas = document.querySelector('#stage canvas');
-    const grab = () => {
-      const c = document.createElement('canvas');
-      c.width = canvas.width;
-      c.height = canvas.height;
-      const ctx = c.getContext('2d');
-      ctx.drawImage(canvas, 0, 0);
-      return ctx.getImageData(0, 0, c.width, c.height).data;
-    };
+    const grab = () => window.opspaceTest.pixels(canvas);
     const pictures = [grab()];
     for (let k = 0; k < 2; ++k) {
       await new Promise((resolve) => setTimeout(resolve, 750));
@@ -158,9 +152,7 @@ try {
     for (const [a, b] of [[0, 1], [1, 2], [0, 2]]) {
       const p = pictures[a], q = pictures[b];
       let n = 0;
-      for (let i = 0; i < p.length; i += 4) {
-        if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 24) ++n;
-      }
+      for (let i = 0; i < p.length / 4; ++i) if (window.opspaceTest.differs(p, q, i)) ++n;
       most = Math.max(most, n);
     }
     return { changed: most, pixels: pictures[0].length / 4 };

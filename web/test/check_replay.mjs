@@ -6,7 +6,7 @@
 // Exit 0: the page loaded without console errors, play/pause and the slider work, the robot
 // covers part of the view and moves; 1: a check failed; 77: no Chromium (ctest SKIP).
 import { pathToFileURL } from 'node:url';
-import { checker, launch, openPage } from './chromium.mjs';
+import { checkInPage, definePixelTools } from './chromium.mjs';
 
 const [page_file, screenshot, share_arg = '0.02'] = process.argv.slice(2);
 const min_robot_share = Number(share_arg);
@@ -15,12 +15,8 @@ if (!page_file || !screenshot || !(min_robot_share > 0 && min_robot_share < 1)) 
   process.exit(2);
 }
 
-const { check, failures } = checker();
-
-const browser = await launch();
-try {
-  const { page, errors } = await openPage(browser, { width: 1200, height: 800 });
-
+await checkInPage({ width: 1200, height: 800 }, async ({ page, errors, check }) => {
+  await definePixelTools(page);
   await page.goto(`${pathToFileURL(page_file).href}#t=1`);
   await page.waitForFunction(() => window.opspaceReplay && window.opspaceReplay.ready, null, { timeout: 60000 });
   const frames = await page.evaluate(() => window.opspaceReplay.frames);
@@ -33,14 +29,7 @@ try {
   const coverage = await page.evaluate(() => {
     const api = window.opspaceReplay;
     const canvas = document.querySelector('#stage canvas');
-    const grab = () => {
-      const c = document.createElement('canvas');
-      c.width = canvas.width;
-      c.height = canvas.height;
-      const ctx = c.getContext('2d');
-      ctx.drawImage(canvas, 0, 0);
-      return ctx.getImageData(0, 0, c.width, c.height).data;
-    };
+    const grab = () => window.opspaceTest.pixels(canvas);
     // Pixel by pixel: does the robot show there (its colour differs from the scene without it)?
     const robotAt = (frame) => {
       api.setFrame(frame);
@@ -49,10 +38,7 @@ try {
       const hidden = grab();
       api.setRobotVisible(true);
       const mask = new Uint8Array(shown.length / 4);
-      for (let i = 0; i < shown.length; i += 4) {
-        mask[i / 4] = Math.abs(shown[i] - hidden[i]) + Math.abs(shown[i + 1] - hidden[i + 1]) +
-          Math.abs(shown[i + 2] - hidden[i + 2]) > 24 ? 1 : 0;
-      }
+      for (let i = 0; i < mask.length; ++i) mask[i] = window.opspaceTest.differs(shown, hidden, i) ? 1 : 0;
       return mask;
     };
     const start = robotAt(0);
@@ -98,10 +84,4 @@ try {
   await page.screenshot({ path: screenshot });
   console.log(`screenshot: ${screenshot}`);
   check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
-} finally {
-  await browser.close();
-}
-if (failures.length) {
-  console.log(`${failures.length} check(s) failed`);
-  process.exit(1);
-}
+});

@@ -7,7 +7,7 @@
 // simulated TEST) or a table of entries with the wrong ones shaded red (a formula TEST); the
 // screenshot is of TEST's section (or of the page's top). 1: a check failed; 77: no Chromium.
 import { pathToFileURL } from 'node:url';
-import { checker, launch, openPage } from './chromium.mjs';
+import { checkInPage, offline } from './chromium.mjs';
 
 const [page_file, screenshot, focus] = process.argv.slice(2);
 if (!page_file || !screenshot) {
@@ -15,13 +15,9 @@ if (!page_file || !screenshot) {
   process.exit(2);
 }
 
-const { check, failures } = checker();
-const browser = await launch();
-try {
-  const { page, errors } = await openPage(browser, { width: 1000, height: 900 });
+await checkInPage({ width: 1000, height: 900 }, async ({ page, errors, check }) => {
   const url = pathToFileURL(page_file).href;
-  // Offline: the page must need nothing but its own file.
-  await page.route('**/*', (route) => (route.request().url() === url ? route.continue() : route.abort()));
+  await offline(page, url);
   await page.goto(url);
   const tests = await page.$$eval('section.test', (sections) => sections.map((s) => ({
     name: s.dataset.test,
@@ -61,7 +57,4 @@ try {
   check(errors.length === 0, `no console error or refused request${errors.length ? `: ${errors.join('; ')}` : ''}`);
   const target = focus ? page.locator(`section.test[data-test="${focus.replace(/"/g, '\\"')}"]`) : page.locator('body');
   await target.screenshot({ path: screenshot });
-} finally {
-  await browser.close();
-}
-process.exit(failures.length ? 1 : 0);
+});

@@ -1,6 +1,7 @@
-// What the pages' headless-Chromium checks share (check_replay.mjs, check_explorer.mjs): the
-// browser with the flags this machine needs, a page that collects console errors, and the
-// ok/FAIL lines.
+// What the pages' headless-Chromium checks share (check_*.mjs): the browser with the flags this
+// machine needs, a page that collects console errors, the ok/FAIL lines and the run of a check
+// from launch to exit status, a page kept offline, and the pixel helpers their in-page code
+// calls.
 import { existsSync } from 'node:fs';
 import { chromium } from 'playwright-core';
 
@@ -40,4 +41,49 @@ export function checker() {
     if (!ok) failures.push(what);
   };
   return { check, failures };
+}
+
+/// Runs `body({ page, errors, check })` on a page of `viewport` in a browser of its own, closes
+/// the browser whatever happens, and ends the process: 0 if every check passed, 1 if one failed
+/// (saying how many).
+export async function checkInPage(viewport, body) {
+  const { check, failures } = checker();
+  const browser = await launch();
+  try {
+    const { page, errors } = await openPage(browser, viewport);
+    await body({ page, errors, check });
+  } finally {
+    await browser.close();
+  }
+  if (failures.length) console.log(`${failures.length} check(s) failed`);
+  process.exit(failures.length ? 1 : 0);
+}
+
+/// Lets `page` load `url` and nothing else: every other request is refused, and so counted among
+/// its errors (openPage): the page must need nothing but its own file.
+export async function offline(page, url) {
+  await page.route('**/*', (route) => (route.request().url() === url ? route.continue() : route.abort()));
+}
+
+/// Defines, in every document `page` loads from now on, what the checks' in-page code compares
+/// pictures with: window.opspaceTest.pixels(canvas), the canvas's RGBA bytes as drawn now (copied
+/// through a 2D canvas, which reads a WebGL canvas too), and differs(a, b, i), whether pixel i
+/// of two such pictures differs by more than 24 in |dR| + |dG| + |dB| (more than rounding and
+/// antialiasing move).
+export async function definePixelTools(page) {
+  await page.addInitScript(() => {
+    window.opspaceTest = {
+      pixels(canvas) {
+        const c = document.createElement('canvas');
+        c.width = canvas.width;
+        c.height = canvas.height;
+        const ctx = c.getContext('2d');
+        ctx.drawImage(canvas, 0, 0);
+        return ctx.getImageData(0, 0, c.width, c.height).data;
+      },
+      differs(a, b, i) {
+        return Math.abs(a[4 * i] - b[4 * i]) + Math.abs(a[4 * i + 1] - b[4 * i + 1]) + Math.abs(a[4 * i + 2] - b[4 * i + 2]) > 24;
+      },
+    };
+  });
 }

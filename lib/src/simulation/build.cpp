@@ -44,25 +44,57 @@ void Simulation::Impl::refresh_kinematics() {
   mb->updateCollisionObjectWorldTransforms(world_to_local, local_origin);
 }
 
-void Simulation::Impl::build() {
-  const int n = dof();
-  for (int i = 0; i < n; ++i) {
-    const Body& b = model.bodies[i];
-    if (b.parent >= i || b.parent < -1) {
-      std::ostringstream os;
-      os << "opspace::Simulation: body " << i << " ('" << b.link_name << "') has parent " << b.parent
-         << "; bodies must be in topological order (parent < index)";
-      throw std::invalid_argument(os.str());
-    }
-    if (!(b.inertia.mass > 0.0)) {
-      std::ostringstream os;
-      os << "opspace::Simulation: body '" << b.link_name << "' has mass " << b.inertia.mass
-         << "; Bullet's articulated-body algorithm needs a positive mass on every moving body";
-      throw std::invalid_argument(os.str());
-    }
-    principal.push_back(principal_frame(b.inertia));
-  }
+namespace {
 
+// Bullet's articulated-body algorithm needs each body after its parent and a positive mass.
+void check_body(int i, const Body& b) {
+  if (b.parent >= i || b.parent < -1) {
+    std::ostringstream os;
+    os << "opspace::Simulation: body " << i << " ('" << b.link_name << "') has parent " << b.parent
+       << "; bodies must be in topological order (parent < index)";
+    throw std::invalid_argument(os.str());
+  }
+  if (!(b.inertia.mass > 0.0)) {
+    std::ostringstream os;
+    os << "opspace::Simulation: body '" << b.link_name << "' has mass " << b.inertia.mass
+       << "; Bullet's articulated-body algorithm needs a positive mass on every moving body";
+    throw std::invalid_argument(os.str());
+  }
+}
+
+// Bullet's shape of a collision shape, centred on its own origin (a cylinder along z).
+std::unique_ptr<btCollisionShape> bullet_shape(const Shape& s) {
+  switch (s.kind) {
+    case Shape::Kind::kSphere:
+      return std::make_unique<btSphereShape>(s.radius);
+    case Shape::Kind::kBox:
+      return std::make_unique<btBoxShape>(to_bt(Eigen::Vector3d(0.5 * s.box_size)));
+    case Shape::Kind::kCylinder:
+      return std::make_unique<btCylinderShapeZ>(btVector3(s.radius, s.radius, 0.5 * s.length));
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+void Simulation::Impl::build() {
+  for (int i = 0; i < dof(); ++i) {
+    check_body(i, model.bodies[i]);
+    principal.push_back(principal_frame(model.bodies[i].inertia));
+  }
+  build_multibody();
+  add_to_world();
+  add_link_colliders();
+  size_state();
+  check_armature();
+  reserve_contacts();
+  refresh_kinematics();
+}
+
+// One link per body, in Bullet's link frame C_i (the frames above): offsetInA = P^-1 O,
+// offsetInB = C^-1.
+void Simulation::Impl::build_multibody() {
+  const int n = dof();
   mb = std::make_unique<btMultiBody>(n, 1.0, btVector3(1.0, 1.0, 1.0), /*fixedBase=*/true,
                                      /*canSleep=*/false);
   mb->setBaseWorldTransform(btTransform::getIdentity());
@@ -86,6 +118,11 @@ void Simulation::Impl::build() {
     }
   }
   mb->finalizeMultiDof();
+}
+
+// The multibody's settings (no damping, sleep or clamp that the Model does not have) and the
+// world's gravity and solver.
+void Simulation::Impl::add_to_world() {
   mb->setCanSleep(false);
   mb->setLinearDamping(0.0);
   mb->setAngularDamping(0.0);
@@ -96,24 +133,15 @@ void Simulation::Impl::build() {
   world.addMultiBody(mb.get());
   world.setGravity(to_bt(model.gravity));
   world.getSolverInfo().m_numIterations = settings.solver_iterations;
+}
 
-  // Link colliders: one compound shape per body, children placed in the inertial frame.
-  for (int i = 0; i < n; ++i) {
+// Link colliders: one compound shape per body, children placed in the inertial frame.
+void Simulation::Impl::add_link_colliders() {
+  for (int i = 0; i < dof(); ++i) {
     std::unique_ptr<btCompoundShape> compound;
     for (const Shape& s : model.collisions) {
       if (s.body != i) continue;
-      std::unique_ptr<btCollisionShape> shape;
-      switch (s.kind) {
-        case Shape::Kind::kSphere:
-          shape = std::make_unique<btSphereShape>(s.radius);
-          break;
-        case Shape::Kind::kBox:
-          shape = std::make_unique<btBoxShape>(to_bt(Eigen::Vector3d(0.5 * s.box_size)));
-          break;
-        case Shape::Kind::kCylinder:
-          shape = std::make_unique<btCylinderShapeZ>(btVector3(s.radius, s.radius, 0.5 * s.length));
-          break;
-      }
+      std::unique_ptr<btCollisionShape> shape = bullet_shape(s);
       if (!compound) compound = std::make_unique<btCompoundShape>();
       compound->addChildShape(to_bt(Eigen::Isometry3d(principal[i].frame.inverse() * s.placement)),
                               shape.get());
@@ -130,7 +158,11 @@ void Simulation::Impl::build() {
     shapes.push_back(std::move(compound));
     colliders.push_back(std::move(col));
   }
+}
 
+// The state at rest and every workspace a step uses, sized once: a step never allocates.
+void Simulation::Impl::size_state() {
+  const int n = dof();
   q = Eigen::VectorXd::Zero(n);
   qdot = Eigen::VectorXd::Zero(n);
   tau = Eigen::VectorXd::Zero(n);
@@ -145,6 +177,10 @@ void Simulation::Impl::build() {
   delta_acc.resize(6 + n);
   omega.resize(n + 1);
   vel.resize(n + 1);
+}
+
+// Each armature a finite number >= 0; with any non-zero, the workspaces of apply_armature().
+void Simulation::Impl::check_armature() {
   for (const Body& b : model.bodies) {
     if (!(b.armature >= 0.0) || !std::isfinite(b.armature)) {
       throw std::invalid_argument("opspace::Simulation: joint '" + b.joint_name + "' has armature " +
@@ -153,12 +189,11 @@ void Simulation::Impl::build() {
     has_armature = has_armature || b.armature > 0.0;
   }
   if (has_armature) {
+    const int n = dof();
     generalized = armature_qdd = stage_q = stage_qdot = stage_qdd = Eigen::VectorXd::Zero(n);
     push_jacobian = Matrix6Xd::Zero(6, n);
     for (const Body& b : model.bodies) body_frame.push_back(model.frame_id(b.link_name));
   }
-  reserve_contacts();
-  refresh_kinematics();
 }
 
 // Bullet keeps at most 4 points per (link, obstacle) manifold: with the capacity reserved

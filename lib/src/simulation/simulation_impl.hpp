@@ -128,10 +128,15 @@ struct Simulation::Impl {
   ~Impl();
   int dof() const { return model.dof(); }
 
-  // build.cpp: checks and world building.
+  // build.cpp: checks and world building; build() runs the steps below it in their order.
   void check_vector(const Eigen::Ref<const Eigen::VectorXd>& v, const char* what) const;
   void refresh_kinematics();
   void build();
+  void build_multibody();     // one Bullet link per body, in its principal inertial frame
+  void add_to_world();        // the multibody's settings, the world's gravity and solver
+  void add_link_colliders();  // each body's collision shapes as one compound
+  void size_state();          // the state at rest and every workspace a step uses
+  void check_armature();      // the armatures, and apply_armature()'s workspaces where one is set
   // Bullet keeps at most 4 points per (link, obstacle) manifold: with the capacity reserved
   // here, gathering contacts in step() never allocates.
   void reserve_contacts();

@@ -7,7 +7,7 @@
 #include <opspace/algorithms/linalg.hpp>
 #include <opspace/algorithms/pp_robot.hpp>
 
-#include "suite.hpp"
+#include "graded_suite.hpp"
 #include "support/random.hpp"
 
 namespace opspace::grading {

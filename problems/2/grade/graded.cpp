@@ -20,7 +20,7 @@
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
-#include "suite.hpp"
+#include "graded_suite.hpp"
 #include "support/problem2.hpp"
 #include "support/random.hpp"
 

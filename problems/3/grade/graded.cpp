@@ -17,7 +17,7 @@
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
-#include "suite.hpp"
+#include "graded_suite.hpp"
 #include "support/random.hpp"
 
 namespace opspace::grading {

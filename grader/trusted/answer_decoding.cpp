@@ -1,4 +1,4 @@
-#include "answers.hpp"
+#include "answer_decoding.hpp"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-/// @file suite.hpp
+/// @file graded_suite.hpp
 /// The graded suite of problem set 2: one function per problem, one file per problem.
 #pragma once
 

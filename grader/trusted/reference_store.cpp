@@ -1,4 +1,4 @@
-#include "reference_runs.hpp"
+#include "reference_store.hpp"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-/// @file reference_runs.hpp
+/// @file reference_store.hpp
 /// The reference's series of the report's figures (grading.hpp: RunFigure): the problem set's
 /// law run by the grader in each simulated test's scenario. A run costs as much as the
 /// student's, so it is made only for a figure that needs it, a failed test's, and kept: for

@@ -1,4 +1,4 @@
-/// @file answers.hpp
+/// @file answer_decoding.hpp
 /// The grader's reading of what a runner sends: the checks of an answer's header, and the
 /// decoding of its value by the function asked. Everything here takes untrusted bytes; it
 /// never allocates more than the header's checked size, and a bad message is a returned or
