@@ -5,7 +5,7 @@
 // the law's terms that moves nothing a test judges costs the law test alone. The comments say
 // what the run shows; its rubric (guide.md) lists the points each costs.
 #include <opspace/algorithms/euler_params.hpp>
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 #include <opspace/math/constants.hpp>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // the run's torque the law's (F_d without Omega-bar, with the run's F_d along x) costs the law
 // test alone. its rubric (guide.md) lists the points each costs.
 #include <opspace/algorithms/euler_params.hpp>
-#include <opspace/hw2/p3.hpp>
+#include <problems/3/contract.hpp>
 
 #include "mistakes.hpp"
 #include "problems/3/tests.hpp"

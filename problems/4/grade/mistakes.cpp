@@ -1,6 +1,6 @@
 // Known mistakes of problem 4. Each replaces one function, or wraps the law it is given (the
 // reference solutions, or the grader's oracle).
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 #include <opspace/algorithms/linalg.hpp>
 #include <problems/4/run/scenario.hpp>
 
