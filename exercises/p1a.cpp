@@ -2,7 +2,7 @@
 // q = (d1, d2): two prismatic joints along X0; link 2 (mass m2) rides on link 1 (mass m1).
 // The task is the end-effector displacement along X0: x_ee = d1 + d2.
 // Grade your work with:  bash scripts/grade --problem 1a
-#include <opspace/hw2/p1a.hpp>
+#include <problems/1a/contract.hpp>
 
 namespace opspace::hw2::p1a {
 

@@ -7,7 +7,7 @@
 // `goal` holds x_d, q_d and the gains kpx, kvx, kpj, kvj.
 // opspace::pseudo_inverse(Jv) (include <opspace/algorithms/linalg.hpp>) computes a
 // pseudo-inverse, or write J^T (J J^T)^-1 yourself.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 namespace opspace::hw2::p1b {
 

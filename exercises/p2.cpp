@@ -13,7 +13,7 @@
 //   E = diag(I3, E_r),  E^+ = diag(I3, E_r^+),  E_r^+ = (E_r^T E_r)^-1 E_r^T
 // opspace::representation_matrix_pinv(lambda) (include <opspace/algorithms/euler_params.hpp>)
 // computes E^+, or write it yourself.
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 
 namespace opspace::hw2::p2 {
 

@@ -10,7 +10,7 @@
 // opspace::representation_matrix_pinv(lambda) and opspace::orientation_error(lambda, lambda_d)
 // (include <opspace/algorithms/euler_params.hpp>) compute E^+ and delta_phi, or reuse your
 // problem 2.
-#include <opspace/hw2/p3.hpp>
+#include <problems/3/contract.hpp>
 
 namespace opspace::hw2::p3 {
 

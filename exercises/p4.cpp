@@ -7,7 +7,7 @@
 // Eigen::JacobiSVD<Eigen::Matrix3d> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV) gives
 // svd.singularValues() (decreasing), svd.matrixU() and svd.matrixV().
 // A singular value sigma_i <= kTolerance * sigma_max counts as zero.
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 
 namespace opspace::hw2::p4 {
 

@@ -1,5 +1,5 @@
 // Problem 1a, reference solution: weighted instantaneous inverse kinematics of the PP robot.
-#include <opspace/hw2/p1a.hpp>
+#include <problems/1a/contract.hpp>
 
 namespace opspace::hw2::p1a {
 

@@ -1,5 +1,5 @@
 // Problem 1b, reference solution: the laws exactly as the problem set writes them.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 namespace opspace::hw2::p1b {
 

@@ -1,5 +1,5 @@
 // Problem 2, reference solution: the equations exactly as the problem set writes them.
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // Problem 3, reference solution: the equations of the problem set.
 #include <opspace/algorithms/euler_params.hpp>
-#include <opspace/hw2/p3.hpp>
+#include <problems/3/contract.hpp>
 
 namespace opspace::hw2::p3 {
 

@@ -1,6 +1,6 @@
 // Problem 4, reference solution: the SVD of Jv and Jw, the second-order test of the types,
 // and the singularity-robust operational-space law with a self-motion potential.
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 
 namespace opspace::hw2::p4 {
 

@@ -74,14 +74,18 @@ int main(int argc, char** argv) {
       current = nullptr;
       if (result.at(0).score != test.points) {
         std::cerr << "hw2-record: the reference earns " << result[0].score << " of " << test.points << " in '"
-                  << problem.key << " " << test.name << "'\n";
+                  << problem.key << " " << test.title << "'\n";
+        full = false;
+      }
+      if (test.id.empty() || test.id.find_first_of(" \n") != std::string::npos) {
+        std::cerr << "hw2-record: '" << problem.key << " " << test.title << "' has no identity of one word\n";
         full = false;
       }
       if (calls.empty()) {
-        std::cerr << "hw2-record: '" << problem.key << " " << test.name << "' called nothing\n";
+        std::cerr << "hw2-record: '" << problem.key << " " << test.title << "' called nothing\n";
         full = false;
       }
-      p.tests.push_back({test.name, test.hint, test.points, spread(std::move(calls))});
+      p.tests.push_back({test.id, test.title, test.hint, test.points, spread(std::move(calls))});
     }
     std::cerr << "problem " << problem.key << ": " << p.tests.size() << " tests recorded\n";
     problems.push_back(std::move(p));

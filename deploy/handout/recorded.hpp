@@ -1,16 +1,17 @@
 /// @file recorded.hpp
-/// The handout's visible suite as data: for each graded test its name, points and hint, and
+/// The handout's visible suite as data: for each graded test its identity, title, points and hint, and
 /// the calls the test made to the reference solutions, each with its encoded arguments and
 /// the reference's encoded answer (protocol/codec.hpp, the machine's byte order). Numbers,
 /// not code: a handout carries no reference implementation (docs/instructor.md).
 ///
 /// The text format, one record per line:
-///   opspace-visible-suite 1 <hex of the double 1.0>      the byte order it was written in
+///   opspace-visible-suite 2 <hex of the double 1.0>      the byte order it was written in
 ///   problem <key> <title>
-///   test <points> <name>
+///   test <points> <identity> <title>                      (GradedTest: the identity has no space)
 ///   hint <text>
 ///   call <function code, hex> <arguments, hex> <answer, hex>
-/// Texts escape '\' as "\\" and a line end as "\n".
+/// Texts escape '\' as "\\" and a line end as "\n". Version 1 named a test by its title alone: a
+/// grader reading it would match no library answer to its tests, so it is refused.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +33,7 @@ struct Call {
 };
 
 struct Test {
-  std::string name, hint;
+  std::string id, title, hint;
   double points = 0.0;
   std::vector<Call> calls;
 };
@@ -93,11 +94,11 @@ inline std::string byte_order() {
 }
 
 inline void write(std::ostream& out, const std::vector<Problem>& problems) {
-  out << "opspace-visible-suite 1 " << byte_order() << "\n";
+  out << "opspace-visible-suite 2 " << byte_order() << "\n";
   for (const Problem& p : problems) {
     out << "problem " << p.key << " " << escape(p.title) << "\n";
     for (const Test& t : p.tests) {
-      out << "test " << t.points << " " << escape(t.name) << "\n" << "hint " << escape(t.hint) << "\n";
+      out << "test " << t.points << " " << t.id << " " << escape(t.title) << "\n" << "hint " << escape(t.hint) << "\n";
       for (const Call& c : t.calls) {
         std::ostringstream code;
         code << std::hex << c.function;
@@ -120,7 +121,8 @@ inline std::vector<Problem> read(const std::string& path) {
     const std::size_t space = line.find(' ');
     const std::string kind = line.substr(0, space), rest = space == std::string::npos ? "" : line.substr(space + 1);
     if (number == 1) {
-      if (kind != "opspace-visible-suite" || rest.rfind("1 ", 0) != 0) throw std::runtime_error(where + ": not a visible suite");
+      if (kind != "opspace-visible-suite" || rest.rfind("2 ", 0) != 0)
+        throw std::runtime_error(where + ": not a visible suite of this version (2); make the handout again");
       if (rest.substr(2) != byte_order())
         throw std::runtime_error(where + ": written on a machine of another byte order; make the handout on this kind of machine");
       continue;
@@ -129,10 +131,12 @@ inline std::vector<Problem> read(const std::string& path) {
       const std::size_t at = rest.find(' ');
       problems.push_back({rest.substr(0, at), unescape(at == std::string::npos ? "" : rest.substr(at + 1)), {}});
     } else if (kind == "test" && !problems.empty()) {
-      const std::size_t at = rest.find(' ');
+      const std::size_t at = rest.find(' '), title = at == std::string::npos ? at : rest.find(' ', at + 1);
+      if (title == std::string::npos) throw std::runtime_error(where + ": a test needs its points, identity and title");
       Test t;
       t.points = std::stod(rest.substr(0, at));
-      t.name = unescape(at == std::string::npos ? "" : rest.substr(at + 1));
+      t.id = rest.substr(at + 1, title - at - 1);
+      t.title = unescape(rest.substr(title + 1));
       problems.back().tests.push_back(t);
     } else if (kind == "hint" && !problems.empty() && !problems.back().tests.empty()) {
       problems.back().tests.back().hint = unescape(rest);

@@ -143,15 +143,14 @@ Problem problem(const std::string& key) {
   if (!error.empty()) {
     // A report that says what is wrong, rather than a grader that stops.
     const std::string finding = "the visible suite could not be read: " + error;
-    return {key, "problem " + key, {{"the visible suite is there", 1.0, "", [finding](const Hw2Api&, Check& check) {
-                                       check.that(false, finding);
-                                     }}}};
+    const auto fails = [finding](const Hw2Api&, Check& check) { check.that(false, finding); };
+    return {key, "problem " + key, {{"visible_suite", "the visible suite is there", 1.0, "", fails}}};
   }
   for (const recorded::Problem& r : suite) {
     if (r.key != key) continue;
     Problem p{r.key, r.title + " (visible suite: the reference's answers at recorded inputs)", {}};
     for (const recorded::Test& t : r.tests) {
-      GradedTest test{t.name, t.points, t.hint, {}};
+      GradedTest test{t.id, t.title, t.points, t.hint, {}};
       test.body = [&t](const Hw2Api& api, Check& check) {
         for (std::size_t i = 0; i < t.calls.size(); ++i) {
           std::string name;
@@ -168,9 +167,8 @@ Problem problem(const std::string& key) {
     return p;
   }
   const std::string finding = std::string(OPSPACE_VISIBLE_SUITE) + " has no problem " + key;
-  return {key, "problem " + key, {{"the visible suite has this problem", 1.0, "", [finding](const Hw2Api&, Check& check) {
-                                     check.that(false, finding);
-                                   }}}};
+  const auto fails = [finding](const Hw2Api&, Check& check) { check.that(false, finding); };
+  return {key, "problem " + key, {{"visible_suite", "the visible suite has this problem", 1.0, "", fails}}};
 }
 
 }  // namespace

@@ -187,7 +187,7 @@ void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& probl
   Json tests = Json::array();
   for (const ProblemResult& p : problems) {
     for (const TestResult& r : p.results) {
-      tests.push_back(Json{{"name", p.problem->key + " " + r.test->name},
+      tests.push_back(Json{{"name", p.problem->key + " " + r.test->title},
                            {"name_format", "text"},
                            {"score", number(r.score)},
                            {"max_score", number(r.test->points)},
@@ -243,7 +243,7 @@ void write_junit(std::ostream& out, const std::vector<ProblemResult>& problems, 
         << "\" failures=\"" << problem_failures << "\">\n";
     for (const TestResult& r : p.results) {
       out << "    <testcase classname=\"problem " << xml_text(p.problem->key) << "\" name=\""
-          << xml_text(r.test->name) << "\"";
+          << xml_text(r.test->title) << "\"";
       if (r.score >= r.test->points) {
         out << "/>\n";
         continue;

@@ -56,7 +56,7 @@ Json class_record(const ProblemResult& problem, const TestResult& test) {
     if (!f.draws.empty() || std::isfinite(f.bound)) runs.push_back(run(f));  // a judged run
   if (runs.empty() && !test.figures.empty()) runs.push_back(run(test.figures.front()));  // what the test reads
   return Json{{"problem", problem.problem->key},
-              {"test", test.test->name},
+              {"test", test.test->title},
               {"mistake", test.mistake},
               {"interrupted", test.interrupted},
               {"grader_fault", test.grader_fault},

@@ -20,6 +20,8 @@ namespace opspace::grading {
 inline constexpr int kRecordDigits = 4;
 
 /// The test's extra_data: {"problem", "test", "mistake", "interrupted", "grader_fault", "runs": [...]}.
+/// "test" is the title (GradedTest::title), not the identity: the class page shows it, and reads it
+/// from a results.json of an older grader too, which named a test by its title alone.
 nlohmann::ordered_json class_record(const ProblemResult& problem, const TestResult& test);
 
 }  // namespace opspace::grading

@@ -36,7 +36,8 @@ Hw2Api recorded(const Hw2Api& api, Recording& recording);
 bool not_written_yet(const Recording& recording);
 
 /// "likely mistake: ...; the problem set asks ..." for the first mistake of `catalogue` aimed at
-/// `test` that reproduces every answer of `recording` (empty if none does).
+/// the test whose identity is `test` (GradedTest::id) that reproduces every answer of `recording`
+/// (empty if none does).
 std::string diagnose(const std::vector<Mistake>& catalogue, const std::string& test, const Recording& recording);
 
 }  // namespace opspace::grading

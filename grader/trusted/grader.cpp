@@ -165,7 +165,7 @@ void apply_oracles(ProblemResult& result, const BuiltRunner& built) {
     double points = 0.0;
     for (TestResult& r : result.results) {
       const bool answered = oracle.tests.empty() ||
-                            std::find(oracle.tests.begin(), oracle.tests.end(), r.test->name) != oracle.tests.end();
+                            std::find(oracle.tests.begin(), oracle.tests.end(), r.test->id) != oracle.tests.end();
       if (!answered) continue;
       ++tests;
       points += r.test->points;

@@ -179,7 +179,7 @@ void carry_diagnoses(const std::vector<Mistake>& catalogue, std::vector<TestResu
     });
     if (!named) continue;
     for (TestResult& r : results) {
-      const bool aimed = std::find(mistake.caught_by.begin(), mistake.caught_by.end(), r.test->name) != mistake.caught_by.end();
+      const bool aimed = std::find(mistake.caught_by.begin(), mistake.caught_by.end(), r.test->id) != mistake.caught_by.end();
       if (!aimed || r.diagnosed || r.interrupted || r.score >= r.test->points) continue;
       r.findings.push_back("likely the same mistake as above: " + mistake.what);
       r.diagnosed = true;
@@ -234,7 +234,7 @@ std::vector<TestResult> run_tests(const std::vector<GradedTest>& tests, const Hw
       result.findings.push_back("not written yet: every value your code returned in this test is zero, as the "
                                 "untouched stub's are: fill in its FILL ME IN");
     } else if (catalogue && result.score < test.points && !result.interrupted) {
-      const std::string likely = diagnose(*catalogue, test.name, recording);
+      const std::string likely = diagnose(*catalogue, test.id, recording);
       if (!likely.empty()) {
         result.findings.push_back(likely);
         result.diagnosed = true;

@@ -134,7 +134,13 @@ class Check {
 
 /// One graded test of a problem.
 struct GradedTest {
-  std::string name;     ///< what a passing implementation does, as a sentence
+  /// Its identity ("1b.ii.sim.part1"), declared once in problems/<key>/tests.hpp: what the known
+  /// mistakes (Mistake::caught_by), the library's answers (Oracle::tests) and the handout's
+  /// recorded suite name it by. Unique in the suite, no spaces; the report shows the title instead.
+  std::string id;
+  /// What a passing implementation does, as a sentence: what the report, results.json (the
+  /// test's name on Gradescope), the class page and the replay's --test show.
+  std::string title;
   double points = 0.0;  ///< what a passing implementation earns
   std::string hint;     ///< how to think about a failure
   std::function<void(const Hw2Api&, Check&)> body;  ///< runs the checks on the functions of the api

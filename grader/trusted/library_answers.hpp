@@ -21,7 +21,7 @@ struct Oracle {
   /// instances, clones and local entities), or a namespace ending in "::" ("opspace::pp::").
   std::string name;
   std::string what;                ///< what it computes, for the report
-  std::vector<std::string> tests;  ///< names of the tests it answers (empty: all of the problem's)
+  std::vector<std::string> tests;  ///< identities of the tests it answers (GradedTest::id; empty: all of the problem's)
 };
 
 /// The answers problem `key` forbids (docs/grader.md lists them for students).

@@ -23,7 +23,7 @@ struct Mistake {
   /// Makes the mistake in `api`: replaces one or more of its functions by wrappers of the
   /// functions it holds (the reference solutions, or the grader's oracles).
   std::function<void(Hw2Api& api)> apply;
-  std::vector<std::string> caught_by;  ///< names of the graded tests that must fail
+  std::vector<std::string> caught_by;  ///< identities of the graded tests that must fail (GradedTest::id)
 };
 
 /// mistakes_1a() ...: each problem's mistakes (problems/<key>/grade/mistakes.cpp), one per

@@ -52,7 +52,7 @@ std::string status(const TestResult& r) {
 
 std::string replay_command(const GradedTest& test, std::uint64_t seed) {
   if (test.replay.empty()) return "";
-  std::string command = "bash scripts/run " + test.replay + " --test " + bash_quoted(test.name);
+  std::string command = "bash scripts/run " + test.replay + " --test " + bash_quoted(test.title);
   if (seed != 0) command += " --seed " + std::to_string(seed);
   return command;
 }
@@ -69,7 +69,7 @@ ProblemResult grade(const Problem& problem, const Hw2Api& api) {
 }
 
 bool is_hidden(const ProblemResult& problem, const TestResult& test, const std::vector<std::string>& hidden) {
-  const std::string name = problem.problem->key + " " + test.test->name;
+  const std::string name = problem.problem->key + " " + test.test->title;
   for (const std::string& h : hidden) {
     if (!h.empty() && name.find(h) != std::string::npos) return true;
   }
@@ -101,7 +101,7 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
       if (is_hidden(p, r, hidden)) continue;
       const std::string score = format_points(r.score) + "/" + format_points(r.test->points);
       out << "  " << status(r) << "  " << score << std::string(score.size() < 6 ? 6 - score.size() : 1, ' ')
-          << r.test->name << "\n";
+          << r.test->title << "\n";
       for (const std::string& j : r.judged) out << "          judged: " << j << "\n";
       if (r.score < r.test->points) {
         for (const std::string& finding : r.findings) out << "          - " << finding << "\n";

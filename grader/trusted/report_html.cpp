@@ -406,9 +406,9 @@ void entry_table(std::ostream& out, const EntryTable& e) {
 void test_block(std::ostream& out, const ProblemResult& p, const TestResult& r, std::uint64_t seed) {
   const std::string st = status(r);
   out << "<section class=\"test " << (st == "PASS" ? "pass" : "fail") << "\" data-test=\""
-      << text(p.problem->key + " " + r.test->name) << "\" data-status=\"" << st << "\" data-simulated=\""
+      << text(p.problem->key + " " + r.test->title) << "\" data-status=\"" << st << "\" data-simulated=\""
       << (r.test->replay.empty() ? 0 : 1) << "\">\n<h3><span class=\"status\">" << st << "</span> "
-      << format_points(r.score) << "/" << format_points(r.test->points) << " " << text(r.test->name) << "</h3>\n";
+      << format_points(r.score) << "/" << format_points(r.test->points) << " " << text(r.test->title) << "</h3>\n";
   if (!r.judged.empty()) {
     out << "<ul class=\"judged\">\n";
     for (const std::string& j : r.judged) out << "<li>judged: " << text(j) << "</li>\n";

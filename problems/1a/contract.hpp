@@ -1,5 +1,6 @@
-/// @file opspace/hw2/p1a.hpp
-/// (problems/1a/contract.hpp, which the build copies where it is included: <opspace/hw2/p1a.hpp>)
+/// @file problems/1a/contract.hpp
+/// (included by its path, <problems/1a/contract.hpp>; the build copies it under the same path for
+/// the grader's sandboxed compiler, which sees the contracts and the library's headers only)
 /// Problem 1a: weighted instantaneous inverse kinematics of the PP robot.
 /// Declared here, written by the student in exercises/p1a.cpp, by the instructor in
 /// solutions/p1a.cpp. Two prismatic joints q = (d1, d2) along X0, masses m1 and m2,

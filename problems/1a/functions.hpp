@@ -8,7 +8,7 @@
 /// fields of the contract's structs, as the protocol encodes them (grader/protocol/codec.hpp).
 #pragma once
 
-#include <opspace/hw2/p1a.hpp>
+#include <problems/1a/contract.hpp>
 
 #define OPSPACE_P1A_FUNCTIONS(F)                                                                                  \
   F(p1a, 0x1a01, kP1aDegreesOfFreedom, degrees_of_freedom)             /* question i: task and robot DOF */        \

@@ -1,5 +1,6 @@
-/// @file opspace/hw2/p1b.hpp
-/// (problems/1b/contract.hpp, which the build copies where it is included: <opspace/hw2/p1b.hpp>)
+/// @file problems/1b/contract.hpp
+/// (included by its path, <problems/1b/contract.hpp>; the build copies it under the same path for
+/// the grader's sandboxed compiler, which sees the contracts and the library's headers only)
 /// Problem 1b: the PUMA 560 holds its tip still while its second joint moves in the null
 /// space of the tip task. Declared here, written by the student in exercises/p1b.cpp, by
 /// the instructor in solutions/p1b.cpp.

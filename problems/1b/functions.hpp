@@ -4,7 +4,7 @@
 /// what a row holds.
 #pragma once
 
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #define OPSPACE_P1B_FUNCTIONS(F) \
   F(p1b, 0x1b01, kP1bControl, control) /* the torques of each PART */

@@ -1,5 +1,6 @@
-/// @file opspace/hw2/p2.hpp
-/// (problems/2/contract.hpp, which the build copies where it is included: <opspace/hw2/p2.hpp>)
+/// @file problems/2/contract.hpp
+/// (included by its path, <problems/2/contract.hpp>; the build copies it under the same path for
+/// the grader's sandboxed compiler, which sees the contracts and the library's headers only)
 /// Problem 2: the KUKA iiwa tracks a position and Euler-parameter orientation trajectory with
 /// decoupled PD control, feed-forward acceleration, null-space damping and gravity
 /// compensation. Declared here, written by the student in exercises/p2.cpp, by the instructor

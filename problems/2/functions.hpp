@@ -4,7 +4,7 @@
 /// row holds.
 #pragma once
 
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 
 #define OPSPACE_P2_FUNCTIONS(F)                                                                            \
   F(p2, 0x0201, kP2DesiredAcceleration, desired_acceleration)            /* 2(a): xddot_d(t) */            \

@@ -4,7 +4,7 @@
 /// row holds.
 #pragma once
 
-#include <opspace/hw2/p3.hpp>
+#include <problems/3/contract.hpp>
 
 #define OPSPACE_P3_FUNCTIONS(F)                                                              \
   F(p3, 0x0301, kP3MotionSelection, motion_selection) /* 3(a): Omega */                      \

@@ -1,5 +1,6 @@
-/// @file opspace/hw2/p4.hpp
-/// (problems/4/contract.hpp, which the build copies where it is included: <opspace/hw2/p4.hpp>)
+/// @file problems/4/contract.hpp
+/// (included by its path, <problems/4/contract.hpp>; the build copies it under the same path for
+/// the grader's sandboxed compiler, which sees the contracts and the library's headers only)
 /// Problem 4: the singularities of the 3R elbow arm (robots/rrr.urdf), analysed (questions
 /// i-iv) and controlled (question v). Declared here, written by the student in
 /// exercises/p4.cpp, by the instructor in solutions/p4.cpp.

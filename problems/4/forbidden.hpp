@@ -8,17 +8,18 @@
 #include <vector>
 
 #include "library_answers.hpp"
+#include "problems/4/tests.hpp"
 
 namespace opspace::grading::forbidden {
 
 inline std::vector<Oracle> p4() {
+  namespace id = test_id::p4;
   const std::vector<std::string> analysis = {
-      "i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv",
-      "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv elsewhere",
-      "iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0",
-      "iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I elbow lock along Z0 and a "
-      "Type II overhead lock across its plane",
-      "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one"};
+      id::kRank,
+      id::kDirections,
+      id::kDirectionLeft,
+      id::kStraightUpTypes,
+      id::kTypesElsewhere};
   std::vector<Oracle> out;
   for (const char* f : {"opspace::directions", "opspace::singularity_type", "opspace::analyse_singularities",
                         "opspace::self_motion_curvature", "opspace::directional_hessian"})

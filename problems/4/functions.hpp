@@ -4,7 +4,7 @@
 /// row holds.
 #pragma once
 
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 
 #define OPSPACE_P4_FUNCTIONS(F)                                                                          \
   F(p4, 0x0401, kP4DegreesOfFreedom, degrees_of_freedom)   /* i. the rank of Jv */                       \

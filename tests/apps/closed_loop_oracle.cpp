@@ -14,10 +14,10 @@
 #include <vector>
 
 #include <opspace/algorithms/euler_params.hpp>
-#include <opspace/hw2/p1b.hpp>
-#include <opspace/hw2/p2.hpp>
-#include <opspace/hw2/p3.hpp>
-#include <opspace/hw2/p4.hpp>
+#include <problems/1b/contract.hpp>
+#include <problems/2/contract.hpp>
+#include <problems/3/contract.hpp>
+#include <problems/4/contract.hpp>
 #include <opspace/model/urdf.hpp>
 #include <problems/1b/run/scenario.hpp>
 #include <problems/2/run/scenario.hpp>

@@ -21,8 +21,7 @@
 # "..."; nor is a path in another tree, written after a colon as git writes a file of a commit
 # (sai2-model:tests/Tests_SaiModel.cpp); nor what git ignores (build/, out/, web/node_modules/),
 # an absolute path, or a relative one that climbs out of the repository. A few paths are made:
-# the contracts' copies the build includes (<opspace/hw2/p1b.hpp>), and what scripts/handout
-# writes into a handout (below, "made" and "placed").
+# what scripts/handout writes into a handout (below, "made" and "placed").
 #
 # A student handout (scripts/handout) leaves out the reference, the instructor's pages and
 # tools, which the comments it keeps still cite: there (no solutions/) the check says SKIPPED.
@@ -46,12 +45,10 @@ else
     -o -type f -print | sed 's|^\./||' | sort > "$list"
 fi
 
-keys=$(sed -n 's/^\([^#[:space:]][^[:space:]]*\).*/\1/p' problems.txt | tr '\n' ' ')
-
 # The top-level folders (those of the files found count too) and files.
 folders="lib exercises solutions robots tests docs apps bench scripts web grader problems deploy"
 awk -v top_folders="$folders .ci .devcontainer" \
-    -v top_files="README.md CMakeLists.txt CMakePresets.json problems.txt" -v keys="$keys" '
+    -v top_files="README.md CMakeLists.txt CMakePresets.json problems.txt" '
 # The repository: its files, their folders, and for the partial paths every end of a path.
 {
   have[$0] = 1
@@ -75,10 +72,7 @@ END {
   for (i in t) top[t[i]] = 1
   split(top_files, t, " ")
   for (i in t) top_file[t[i]] = 1
-  # Made: the copies of the contracts, which the build includes (CMakeLists.txt)...
-  n = split(keys, key, " ")
-  for (i = 1; i <= n; i++) ends["opspace/hw2/p" key[i] ".hpp"] = ends["hw2/p" key[i] ".hpp"] = 1
-  # ... and what scripts/handout writes into a handout: the recorded suite, and the summaries of
+  # Made: what scripts/handout writes into a handout: the recorded suite, and the summaries of
   # the reference runs (which the build writes too, in its apps/reference/).
   make("grader/suite/visible/suite.txt")
   make("apps/reference/reference_runs.hpp")

@@ -5,7 +5,7 @@ cmake_minimum_required(VERSION 3.22)
 # the next.
 #   cmake -DGRADER=<hw2-grade> -DWORK=<dir> -P check_seed.cmake
 file(MAKE_DIRECTORY "${WORK}")
-file(WRITE "${WORK}/p1a.cpp" "#include <opspace/hw2/p1a.hpp>
+file(WRITE "${WORK}/p1a.cpp" "#include <problems/1a/contract.hpp>
 namespace opspace::hw2::p1a {
 DegreesOfFreedom degrees_of_freedom() { return {}; }
 Eigen::Matrix2d mass_matrix(double, double) { return Eigen::Matrix2d::Zero(); }

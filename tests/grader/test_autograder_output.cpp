@@ -19,8 +19,8 @@ namespace grading = opspace::grading;
 TEST_CASE("results.json is valid JSON, keeps every text and writes scores as before") {
   grading::Problem problem;
   problem.key = "1a";
-  problem.tests.push_back({"i. the \"first\" test", 3.0, "a hint", {}});
-  problem.tests.push_back({"ii. the second test", 3.0, "another hint", {}});
+  problem.tests.push_back({"1a.i.first", "i. the \"first\" test", 3.0, "a hint", {}});
+  problem.tests.push_back({"1a.ii.second", "ii. the second test", 3.0, "another hint", {}});
   grading::ProblemResult result;
   result.problem = &problem;
   result.score = 4.5;
@@ -77,11 +77,11 @@ struct HiddenFixture {
   grading::ProblemResult ra, rb;
   HiddenFixture() {
     a.key = "1a";
-    a.tests.push_back({"i. a formula", 3.0, "hint", {}});
-    a.tests.push_back({"ii. in simulation the tip holds", 5.0, "hint", {}});
+    a.tests.push_back({"1a.i.formula", "i. a formula", 3.0, "hint", {}});
+    a.tests.push_back({"1a.ii.sim", "ii. in simulation the tip holds", 5.0, "hint", {}});
     b.key = "2";
-    b.tests.push_back({"i. another formula", 2.0, "hint", {}});
-    b.tests.push_back({"ii. in simulation it tracks", 4.0, "hint", {}});
+    b.tests.push_back({"2.i.formula", "i. another formula", 2.0, "hint", {}});
+    b.tests.push_back({"2.ii.sim", "ii. in simulation it tracks", 4.0, "hint", {}});
     ra = result(a, {1.0, 5.0});
     rb = result(b, {2.0, 4.0});
   }
@@ -207,7 +207,7 @@ TEST_CASE("the report's page escapes every text, draws each figure from its data
   // to fail with report_html.cpp's text() returning its argument unescaped.
   grading::Problem problem;
   problem.key = "1b";
-  problem.tests.push_back({"iv. in simulation the tip holds", 4.0, "a <b>hint</b>", {}, "hw2-p1 3"});
+  problem.tests.push_back({"1b.iv.sim", "iv. in simulation the tip holds", 4.0, "a <b>hint</b>", {}, "hw2-p1 3"});
   grading::ProblemResult result;
   result.problem = &problem;
   result.max_score = 4.0;

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "opspace/hw2/p1b.hpp"
+#include "problems/1b/contract.hpp"
 #include <problems/1b/run/lab.hpp>
 #include "opspace/live/run.hpp"
 #include "opspace/live/session.hpp"

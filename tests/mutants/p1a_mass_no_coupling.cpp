@@ -3,7 +3,7 @@
 // the m2 d1dot d2dot term of the kinetic energy left out of the mass matrix. Graded as a
 // submission by check_mutant_page.sh: the report page's table of M shows the two off-diagonal
 // entries wrong (problems/1a/guide.md's picture).
-#include <opspace/hw2/p1a.hpp>
+#include <problems/1a/contract.hpp>
 
 namespace opspace::hw2::p1a {
 

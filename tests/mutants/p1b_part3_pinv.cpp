@@ -3,7 +3,7 @@
 // PART3's projector I - Jv^T Jv+^T. Graded as a submission and linked into hw2-p1 as a program
 // (hw2-p1-part3-pinv), by check_report_page.sh: the report's page plots its drift against the
 // reference, and its replay command, run on this program, reproduces the graded run.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 namespace opspace::hw2::p1b {
 

@@ -4,7 +4,7 @@
 // lambda_d, so the torque differs from the law's by 0.015 % at most and every judged statistic
 // is the reference's: check_slip.cmake grades it with the real grader and expects the law test
 // alone lost, 14 / 18, each simulated test's statistic met, and the law test naming the slip.
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 
 #include <cmath>
 

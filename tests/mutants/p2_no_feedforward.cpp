@@ -3,7 +3,7 @@
 // E^+ xddot_d left out of the controller's desired acceleration. Graded as a submission by
 // check_mutant_page.sh: the report page plots its position error a few mm above the 1 mm bound
 // while the reference's stays under it (problems/2/guide.md's picture).
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 
 #include <cmath>
 

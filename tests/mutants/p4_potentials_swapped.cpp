@@ -3,7 +3,7 @@
 // self-motion potential of each target given to the other. Graded as a submission by
 // check_mutant_page.sh: the report page plots its tip error never coming under the 5 mm bound
 // while the reference's does within 2 s (problems/4/guide.md's picture).
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 
 namespace opspace::hw2::p4 {
 

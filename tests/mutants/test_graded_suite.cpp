@@ -17,7 +17,9 @@
 #include "grader.hpp"
 #include "linked_api.hpp"
 #include "mistakes.hpp"
+#include "library_answers.hpp"
 #include "oracles.hpp"
+#include "problems/2/tests.hpp"
 #include "report.hpp"
 #include "graded_suite.hpp"
 #include "tests/support/gradescope_html.hpp"
@@ -26,11 +28,12 @@ namespace grading = opspace::grading;
 
 namespace {
 
+// The identities of the tests `api` loses points in.
 std::set<std::string> failed_tests(const grading::Hw2Api& api) {
   std::set<std::string> failed;
   for (const grading::Problem& problem : grading::graded_suite()) {
     for (const grading::TestResult& r : grading::run_tests(problem.tests, api)) {
-      if (r.score < r.test->points) failed.insert(r.test->name);
+      if (r.score < r.test->points) failed.insert(r.test->id);
     }
   }
   return failed;
@@ -49,18 +52,18 @@ void check_figures_draw_their_verdicts(const grading::TestResult& r) {
   for (const grading::RunFigure& f : r.figures) {
     if (f.draws.empty() || std::isnan(f.verdict_yours)) continue;  // nothing judged: the run stopped early
     const double plotted = grading::plotted_statistic(f, f.student);
-    INFO(r.test->name << ": the figure of " << f.quantity << " draws '" << f.draws << "'");
+    INFO(r.test->title << ": the figure of " << f.quantity << " draws '" << f.draws << "'");
     CHECK(std::abs(plotted - f.verdict_yours) <= 1e-9 * std::max(1.0, std::abs(f.verdict_yours)));
   }
   if (r.judged.empty()) return;
   for (const grading::RunFigure& f : r.figures) {
-    INFO(r.test->name << ": the figure of " << f.quantity << " names '" << f.draws << "', which nothing judged");
+    INFO(r.test->title << ": the figure of " << f.quantity << " names '" << f.draws << "', which nothing judged");
     CHECK((f.draws.empty() || !std::isnan(f.verdict_yours)));
   }
 }
 
 // Every "likely mistake" line the grader prints for `api`, problem by problem; `json`, if given,
-// gets the results.json of the grading, and `failed` the names of the tests that lost points.
+// gets the results.json of the grading, and `failed` the identities of the tests that lost points.
 std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* json = nullptr,
                                      std::set<std::string>* failed = nullptr) {
   std::set<std::string> named;
@@ -75,7 +78,7 @@ std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* js
       check_figures_draw_their_verdicts(r);
       result.score += r.score;
       result.max_score += r.test->points;
-      if (failed && r.score < r.test->points) failed->insert(r.test->name);
+      if (failed && r.score < r.test->points) failed->insert(r.test->id);
       for (const std::string& f : r.findings)
         if (f.rfind("likely mistake: ", 0) == 0) named.insert(f);
     }
@@ -90,16 +93,16 @@ std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* js
 }
 
 // The rubric's short name of each test of `problem`: its label ("c" of "c. the controller ..."),
-// numbered in the report's order where several tests share it ("d1" ... "d5").
+// numbered in the report's order where several tests share it ("d1" ... "d5"), by test identity.
 std::map<std::string, std::string> short_names(const grading::Problem& problem) {
   std::map<std::string, int> count;
-  const auto label = [](const std::string& name) { return name.substr(0, name.find('.')); };
-  for (const grading::GradedTest& t : problem.tests) ++count[label(t.name)];
+  const auto label = [](const std::string& title) { return title.substr(0, title.find('.')); };
+  for (const grading::GradedTest& t : problem.tests) ++count[label(t.title)];
   std::map<std::string, int> seen;
   std::map<std::string, std::string> out;
   for (const grading::GradedTest& t : problem.tests) {
-    const std::string l = label(t.name);
-    out[t.name] = count[l] > 1 ? l + std::to_string(++seen[l]) : l;
+    const std::string l = label(t.title);
+    out[t.id] = count[l] > 1 ? l + std::to_string(++seen[l]) : l;
   }
   return out;
 }
@@ -112,8 +115,8 @@ std::string rubric_row(const grading::Problem& problem, const grading::Mistake& 
   double lost = 0.0, total = 0.0;
   for (const grading::GradedTest& t : problem.tests) {
     total += t.points;
-    if (failed.count(t.name) == 0) continue;
-    tests += (tests.empty() ? "" : ", ") + names.at(t.name);
+    if (failed.count(t.id) == 0) continue;
+    tests += (tests.empty() ? "" : ", ") + names.at(t.id);
     lost += t.points;
   }
   std::string what;
@@ -142,7 +145,7 @@ std::set<std::string> documented_rubric() {
 const grading::Problem& problem_of(const std::vector<grading::Problem>& suite, const grading::Mistake& mistake) {
   for (const grading::Problem& problem : suite)
     for (const grading::GradedTest& test : problem.tests)
-      if (test.name == mistake.caught_by.front()) return problem;
+      if (test.id == mistake.caught_by.front()) return problem;
   throw std::runtime_error("no problem has the test " + mistake.caught_by.front());
 }
 
@@ -154,7 +157,7 @@ TEST_CASE("the reference solutions earn full marks on every graded test") {
     for (const grading::TestResult& r : result.results) {
       std::string findings;
       for (const std::string& f : r.findings) findings += "\n    " + f;
-      INFO("problem " << problem.key << ": " << r.test->name << findings);
+      INFO("problem " << problem.key << ": " << r.test->title << findings);
       CHECK(r.score == r.test->points);
     }
   }
@@ -234,25 +237,68 @@ TEST_CASE("the reference solutions get no 'likely mistake' line") {
 
 TEST_CASE("every graded test names what it checks and carries points and a hint") {
   for (const grading::Problem& problem : grading::graded_suite()) {
-    std::set<std::string> names;
+    std::set<std::string> titles;
     for (const grading::GradedTest& test : problem.tests) {
-      INFO("problem " << problem.key << ": " << test.name);
+      INFO("problem " << problem.key << ": " << test.title);
       CHECK(test.points > 0);
       CHECK(!test.hint.empty());
-      CHECK(names.insert(test.name).second);  // unique, so that a mistake's target is unambiguous
+      CHECK(titles.insert(test.title).second);  // unique: a student tells the tests apart by their titles
     }
   }
 }
 
-TEST_CASE("every known mistake aims at tests that exist and says what the problem set asks") {
-  std::set<std::string> tests;
+// The identities of every problem's tests, each with its problem's key.
+std::map<std::string, std::string> identities() {
+  std::map<std::string, std::string> out;
   for (const grading::Problem& problem : grading::graded_suite())
-    for (const grading::GradedTest& test : problem.tests) tests.insert(test.name);
-  for (const grading::Mistake& mistake : grading::all_mistakes()) {
-    INFO("mistake: " << mistake.what);
-    CHECK(!mistake.instead.empty());
-    CHECK(!mistake.caught_by.empty());
-    for (const std::string& name : mistake.caught_by) CHECK(tests.count(name) == 1);
+    for (const grading::GradedTest& test : problem.tests) out.emplace(test.id, problem.key);
+  return out;
+}
+
+// The identity is what a mistake, a library answer and the handout's recorded suite name a test by
+// (problems/<key>/tests.hpp): two tests sharing one would take each other's mistakes and answers.
+// Seen to fail with 1b's kLawPart2 given kLawPart1's value.
+TEST_CASE("every graded test has an identity of its own: one word, its problem's key first") {
+  std::set<std::string> seen;
+  for (const grading::Problem& problem : grading::graded_suite()) {
+    for (const grading::GradedTest& test : problem.tests) {
+      INFO("problem " << problem.key << ": " << test.title << ": identity '" << test.id << "'");
+      CHECK(test.id.rfind(problem.key + ".", 0) == 0);
+      CHECK(test.id.size() > problem.key.size() + 1);
+      CHECK(test.id.find_first_of(" \t\n") == std::string::npos);  // one word: the recorded suite's format
+      CHECK(seen.insert(test.id).second);  // no other test's, in its problem or another
+    }
+  }
+}
+
+// A mistake's or an answer's test is a constant of problems/<key>/tests.hpp, so a misspelt name does
+// not compile; this catches a constant no test carries, or one of another problem. Seen to fail with
+// 1b's kSimPart3 given to none of its tests.
+TEST_CASE("every known mistake aims at tests that exist and says what the problem set asks") {
+  const std::map<std::string, std::string> tests = identities();
+  for (const grading::Problem& problem : grading::graded_suite()) {
+    for (const grading::Mistake& mistake : grading::mistakes(problem.key)) {
+      INFO("problem " << problem.key << ", mistake: " << mistake.what);
+      CHECK(!mistake.instead.empty());
+      CHECK(!mistake.caught_by.empty());
+      for (const std::string& id : mistake.caught_by) {
+        INFO("it names the test " << id);
+        CHECK((tests.count(id) == 1 && tests.at(id) == problem.key));
+      }
+    }
+  }
+}
+
+// forbidden.hpp names tests as the mistakes do. Seen to fail with 4's kTypesElsewhere given to none.
+TEST_CASE("every library answer a problem forbids costs tests of that problem") {
+  const std::map<std::string, std::string> tests = identities();
+  for (const grading::Problem& problem : grading::graded_suite()) {
+    for (const grading::Oracle& oracle : grading::oracles(problem.key)) {
+      for (const std::string& id : oracle.tests) {
+        INFO("problem " << problem.key << ", answer " << oracle.name << " names the test " << id);
+        CHECK((tests.count(id) == 1 && tests.at(id) == problem.key));
+      }
+    }
   }
 }
 
@@ -271,9 +317,9 @@ TEST_CASE("a wrong 2(a) costs its own test alone: problem 2's runs take xddot_d 
   for (const grading::Problem& problem : grading::graded_suite()) {
     if (problem.key != "2") continue;
     for (const grading::TestResult& r : grading::run_tests(problem.tests, api))
-      if (r.score < r.test->points) failed.insert(r.test->name);
+      if (r.score < r.test->points) failed.insert(r.test->id);
   }
   INFO("tests that failed:" << join(failed));
-  CHECK(failed == std::set<std::string>{"a. xddot_d is the second time derivative of x_d(t), as in the closed forms of 2(a)"});
+  CHECK(failed == std::set<std::string>{grading::test_id::p2::kAcceleration});
   CHECK(calls < 100);  // the formula tests' few calls; a run would make 10000
 }

@@ -8,6 +8,7 @@
 #include <opspace/algorithms/pp_robot.hpp>
 
 #include "graded_suite.hpp"
+#include "problems/1a/tests.hpp"
 #include "support/random.hpp"
 
 namespace opspace::grading {
@@ -228,31 +229,33 @@ void split_displacement(const Hw2Api& api, Check& check) {
 }  // namespace
 
 Problem problem_1a() {
+  namespace id = test_id::p1a;
   return {"1a",
           "PP robot: weighted instantaneous inverse kinematics",
           {
-              {"i. the task needs one degree of freedom, the robot has two: it is redundant", 1,
+              {id::kRedundant, "i. the task needs one degree of freedom, the robot has two: it is redundant", 1,
                "Count the task coordinates and the joints.", degrees_of_freedom},
-              {"ii. the mass matrix reproduces the kinetic energy of both links", 3,
+              {id::kMassMatrix, "ii. the mass matrix reproduces the kinetic energy of both links", 3,
                "Expand T = 1/2 m1 d1dot^2 + 1/2 m2 (d1dot + d2dot)^2 and match 1/2 qdot^T A qdot.",
                mass_matrix},
-              {"iii. the task Jacobian maps joint rates to the end-effector rate", 1,
+              {id::kJacobian, "iii. the task Jacobian maps joint rates to the end-effector rate", 1,
                "Differentiate x_ee = d1 + d2.", task_jacobian},
-              {"iv. the pseudo-inverse is J^T (J J^T)^-1", 3,
+              {id::kPseudoInverse, "iv. the pseudo-inverse is J^T (J J^T)^-1", 3,
                "J J^T is 1x1 here: a number to divide by.", pseudo_inverse},
-              {"iv. I - J+ J keeps only the self-motions that leave the end-effector still", 2,
+              {id::kPseudoInverseProjector,
+               "iv. I - J+ J keeps only the self-motions that leave the end-effector still", 2,
                "The identity minus the outer product J_inv J, 2x2.", pseudo_inverse_projector},
-              {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1", 3,
+              {id::kWeightedInverse, "v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1", 3,
                "Invert the weight: a joint with a large weight should move little.", weighted_inverse},
-              {"v. I - J# J is the weighted null-space projector", 2,
+              {id::kWeightedProjector, "v. I - J# J is the weighted null-space projector", 2,
                "Mind the order: I - J_inv J, not its transpose.", weighted_projector},
-              {"vi. the inertia-weighted inverse moves only the light link", 3,
+              {id::kConsistentInverse, "vi. the inertia-weighted inverse moves only the light link", 3,
                "It is the weighted inverse with W = A.", inertia_weighted_inverse},
-              {"vi. I - Jbar J is the dynamically consistent projector", 1,
+              {id::kConsistentProjector, "vi. I - Jbar J is the dynamically consistent projector", 1,
                "Same projector formula, with Jbar as the right inverse.", inertia_weighted_projector},
-              {"iv-vi. every inverse gives the family dq = J_inv dx + (I - J_inv J) dq0", 2,
+              {id::kFamily, "iv-vi. every inverse gives the family dq = J_inv dx + (I - J_inv J) dq0", 2,
                "Task motion plus projected self-motion.", inverse_kinematics_family},
-              {"vi. J+ shares dx equally between the joints, Jbar moves only joint 2", 2,
+              {id::kSharing, "vi. J+ shares dx equally between the joints, Jbar moves only joint 2", 2,
                "Apply your J+ and your Jbar (W = A(m1, m2)) to dx with dq0 = 0.", split_displacement},
           }};
 }

@@ -1,5 +1,6 @@
 // Known mistakes of problem 1a. Each replaces one function by a wrong formula.
 #include "mistakes.hpp"
+#include "problems/1a/tests.hpp"
 
 namespace opspace::grading {
 
@@ -10,7 +11,8 @@ using hw2::p1a::DisplacementSplit;
 }  // namespace
 
 std::vector<Mistake> mistakes_1a() {
-  const std::string mass = "ii. the mass matrix reproduces the kinetic energy of both links";
+  namespace id = test_id::p1a;
+  const std::string mass = id::kMassMatrix;
   return {
       {"A without the coupling term: m2 left off the diagonal",
        "link 2 rides on link 1, so T = 1/2 m1 d1dot^2 + 1/2 m2 (d1dot + d2dot)^2 and A = [m1 + m2, m2; m2, m2]",
@@ -27,7 +29,7 @@ std::vector<Mistake> mistakes_1a() {
       {"J+ = J^T, without (J J^T)^-1",
        "J+ = J^T (J J^T)^-1",
        [](Hw2Api& api) { api.p1a.pseudo_inverse = [](const Eigen::RowVector2d& J) { return Eigen::Vector2d(J.transpose()); }; },
-       {"iv. the pseudo-inverse is J^T (J J^T)^-1"}},
+       {id::kPseudoInverse}},
       {"J# built with W where W^-1 belongs",
        "J# = W^-1 J^T (J W^-1 J^T)^-1: the inverse of the weight",
        [](Hw2Api& api) {
@@ -36,7 +38,7 @@ std::vector<Mistake> mistakes_1a() {
            return Eigen::Vector2d(W_Jt / J.dot(W_Jt));
          };
        },
-       {"v. the weighted inverse is W^-1 J^T (J W^-1 J^T)^-1"}},
+       {id::kWeightedInverse}},
       // J+ J is symmetric, so only the projectors of J# and Jbar reveal the transpose.
       {"the projector written as I - J^T J_inv^T",
        "the joint-space projector is I - J_inv J; I - J^T J_inv^T is its transpose, which acts on torques",
@@ -45,7 +47,7 @@ std::vector<Mistake> mistakes_1a() {
            return Eigen::Matrix2d(Eigen::Matrix2d::Identity() - J.transpose() * J_inv.transpose());
          };
        },
-       {"v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector"}},
+       {id::kWeightedProjector, id::kConsistentProjector}},
       // A route, not a slip: the stub's answer with the solution set's two projectors pasted in
       // for its own inputs. Each projector test asks J = [1 1] first, then random J and right
       // inverses, where the table has nothing to say.
@@ -64,8 +66,8 @@ std::vector<Mistake> mistakes_1a() {
            return Eigen::Matrix2d(Eigen::Matrix2d::Zero());  // the stub's answer
          };
        },
-       {"iv. I - J+ J keeps only the self-motions that leave the end-effector still",
-        "v. I - J# J is the weighted null-space projector", "vi. I - Jbar J is the dynamically consistent projector"}},
+       {id::kPseudoInverseProjector,
+        id::kWeightedProjector, id::kConsistentProjector}},
       {"question vi answered with J+ for both splits",
        "the second split uses Jbar = A^-1 J^T (J A^-1 J^T)^-1 with A = A(m1, m2): it moves only d2",
        [](Hw2Api& api) {
@@ -76,7 +78,7 @@ std::vector<Mistake> mistakes_1a() {
            return split;
          };
        },
-       {"vi. J+ shares dx equally between the joints, Jbar moves only joint 2"}},
+       {id::kSharing}},
   };
 }
 

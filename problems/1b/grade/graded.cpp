@@ -18,6 +18,7 @@
 #include "oracles.hpp"
 #include "run_figure.hpp"
 #include "graded_suite.hpp"
+#include "problems/1b/tests.hpp"
 #include "support/random.hpp"
 
 namespace opspace::grading {
@@ -290,38 +291,40 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
 }  // namespace
 
 Problem problem_1b() {
+  namespace id = test_id::p1b;
   return {"1b",
           "PUMA 560: tip control and null-space motion (simulated)",
           {
-              {"ii. PART1 applies Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p) + A (-kvj dq)", 3,
+              {id::kLawPart1, "ii. PART1 applies Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p) + A (-kvj dq)", 3,
                "Build the task force F = Lambda_v (...) + p, map it with Jv^T, add the joint damping A (-kvj dq).",
                [](const Hw2Api& api, Check& check) {
                  law(Part::kTipPd, 201, "PART1: tip PD, gravity at the tip, joint damping", api, check);
                }},
-              {"ii. without joint damping the law is Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p)", 1,
+              {id::kLawWithoutDamping,
+               "ii. without joint damping the law is Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p)", 1,
                "PART1 without the A (-kvj dq) term.",
                [](const Hw2Api& api, Check& check) {
                  law(Part::kTipPdWithoutJointDamping, 202, "question ii: no joint damping", api, check);
                }},
-              {"iii. PART2 projects the joint task with I - Jv^T Jv+^T", 3,
+              {id::kLawPart2, "iii. PART2 projects the joint task with I - Jv^T Jv+^T", 3,
                "Jv+ = Jv^T (Jv Jv^T)^-1 (6x3). The joint task is A (-kpj (q - q_d) - kvj dq) + g.",
                [](const Hw2Api& api, Check& check) {
                  law(Part::kPseudoInverseNullspace, 203, "PART2: pseudo-inverse null-space projector", api, check);
                }},
-              {"iv. PART3 projects the joint task with I - Jv^T Jbar_v^T", 3,
+              {id::kLawPart3, "iv. PART3 projects the joint task with I - Jv^T Jbar_v^T", 3,
                "Use s.Jbar_v, the dynamically consistent inverse; the joint task includes g.",
                [](const Hw2Api& api, Check& check) {
                  law(Part::kDynamicallyConsistentNullspace, 204, "PART3: dynamically consistent projector", api,
                      check);
                }},
-              {"ii. in simulation PART1 brings the tip to x_d and holds it", 3,
+              {id::kSimPart1, "ii. in simulation PART1 brings the tip to x_d and holds it", 3,
                "If the tip sags, check p; if it oscillates or runs away, check the signs and Lambda_v.",
                part1_holds_the_tip, "hw2-p1 1"},
-              {"iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d", 4,
+              {id::kSimPart3, "iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d", 4,
                "Only the dynamically consistent projector keeps the joint task out of the tip's way; "
                "without g in the joint task, joint 2 sags instead of following q_d.",
                part3_holds_the_tip_while_q2_moves, "hw2-p1 3"},
-              {"iii. in simulation the PART2 tip drifts at least ten times more than PART3's", 3,
+              {id::kSimDriftRatio, "iii. in simulation the PART2 tip drifts at least ten times more than PART3's", 3,
                "PART2 must use the pseudo-inverse projector, PART3 the dynamically consistent one: "
                "the difference is the point of the problem.",
                part2_drifts_more_than_part3, "hw2-p1 compare"},

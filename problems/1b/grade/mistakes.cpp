@@ -3,6 +3,7 @@
 // the law at every tick of its runs (law_pin.hpp), so a mistake in a part's law costs each
 // simulated test that runs that part, whatever the run's behaviour.
 #include "mistakes.hpp"
+#include "problems/1b/tests.hpp"
 
 namespace opspace::grading {
 
@@ -35,13 +36,14 @@ bool nullspace_part(Part part) {
 }  // namespace
 
 std::vector<Mistake> mistakes_1b() {
-  const std::string law1 = "ii. PART1 applies Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p) + A (-kvj dq)";
-  const std::string law1n = "ii. without joint damping the law is Jv^T (Lambda_v (-kpx (x - x_d) - kvx dx) + p)";
-  const std::string sim1 = "ii. in simulation PART1 brings the tip to x_d and holds it";
-  const std::string law2 = "iii. PART2 projects the joint task with I - Jv^T Jv+^T";
-  const std::string law3 = "iv. PART3 projects the joint task with I - Jv^T Jbar_v^T";
-  const std::string sim3 = "iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d";
-  const std::string ratio = "iii. in simulation the PART2 tip drifts at least ten times more than PART3's";
+  namespace id = test_id::p1b;
+  const std::string law1 = id::kLawPart1;
+  const std::string law1n = id::kLawWithoutDamping;
+  const std::string sim1 = id::kSimPart1;
+  const std::string law2 = id::kLawPart2;
+  const std::string law3 = id::kLawPart3;
+  const std::string sim3 = id::kSimPart3;
+  const std::string ratio = id::kSimDriftRatio;
   return {
       // PART3 then drifts like PART2: the ratio test sees two equal drifts.
       {"PART3 projects with the pseudo-inverse, like PART2",

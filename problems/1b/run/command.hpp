@@ -2,7 +2,7 @@
 // tests/apps/test_cli.cpp checks it and tests/fuzz/fuzz_cli.cpp fuzzes it.
 #pragma once
 
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <opspace/programs/cli.hpp>
 

@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "opspace/hw2/p1b.hpp"
+#include "problems/1b/contract.hpp"
 
 namespace opspace::live {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 #include <problems/1b/run/scenario.hpp>
 #include <opspace/scenarios/common.hpp>
 #include <problems/1b/run/pictures.hpp>

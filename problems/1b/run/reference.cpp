@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 #include <opspace/programs/reference_text.hpp>
 #include <problems/1b/run/scenario.hpp>
 
@@ -139,5 +139,5 @@ std::string fragment(const Runs& runs) {
 
 cli::ReferenceText reference_run_1b() {
   const Runs runs = run_parts();
-  return {{"opspace/hw2/p1b.hpp", "problems/1b/run/scenario.hpp"}, declarations(runs), {{"p1b-reference", fragment(runs)}}};
+  return {{"problems/1b/contract.hpp", "problems/1b/run/scenario.hpp"}, declarations(runs), {{"p1b-reference", fragment(runs)}}};
 }

@@ -21,6 +21,7 @@
 #include "oracles.hpp"
 #include "run_figure.hpp"
 #include "graded_suite.hpp"
+#include "problems/2/tests.hpp"
 #include "support/problem2.hpp"
 #include "support/random.hpp"
 
@@ -340,40 +341,48 @@ void self_motion_is_damped(const Hw2Api& api, Check& check) {
 }  // namespace
 
 Problem problem_2() {
+  namespace id = test_id::p2;
   return {"2",
           "KUKA iiwa: position and Euler-parameter trajectory tracking (simulated)",
           {
-              {"a. xddot_d is the second time derivative of x_d(t), as in the closed forms of 2(a)", 2,
+              {id::kAcceleration,
+               "a. xddot_d is the second time derivative of x_d(t), as in the closed forms of 2(a)", 2,
                "Differentiate twice with the chain rule: a = (pi/4) cos(2 pi t/5), so d^2/dt^2 sin(a) = "
                "cos(a) a'' - sin(a) a'^2. The x component is 0.",
                desired_acceleration_is_the_second_derivative},
-              {"b. [vdot_d; wdot_d] = E^+(lambda) xddot_d, with E_r^+ = (E_r^T E_r)^-1 E_r^T = 4 E_r^T", 2,
+              {id::kTwistAcceleration,
+               "b. [vdot_d; wdot_d] = E^+(lambda) xddot_d, with E_r^+ = (E_r^T E_r)^-1 E_r^T = 4 E_r^T", 2,
                "E^+ = diag(I3, E_r^+) is 6x7; evaluate E_r at the lambda passed in. The term E_r^+ Edot_r w is "
                "zero for Euler parameters.",
                twist_acceleration_is_E_pinv_xddot},
-              {"c. the controller applies J0^T (Lambda0 (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ xdot_d) "
+              {id::kLaw,
+               "c. the controller applies J0^T (Lambda0 (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ xdot_d) "
                "+ [vdot_d; wdot_d]) + p) + N0^T (A (-kvj dq) + g)",
                4,
                "delta_phi = E_r^+ (lambda - lambda_d); every E^+ at the CURRENT s.lambda (not lambda_d); "
                "[vdot_d; wdot_d] from your 2(b) with goal.xddot_d; the joint damping and g go through N0^T.",
                law},
-              {"d. in simulation link7's origin follows the desired position within 1 mm RMS after 1 s", 3,
+              {id::kSimPosition,
+               "d. in simulation link7's origin follows the desired position within 1 mm RMS after 1 s", 3,
                "A lag of a few mm that grows with the trajectory's curvature is a missing feed-forward "
                "[vdot_d; wdot_d]; centimetres mean the joint damping is not projected with N0^T.",
                position_tracking, "hw2-p2"},
-              {"d. in simulation link7's orientation follows lambda_d within 0.01 rad RMS after 1 s", 3,
+              {id::kSimOrientation,
+               "d. in simulation link7's orientation follows lambda_d within 0.01 rad RMS after 1 s", 3,
                "If link7 turns away from lambda_d, check the sign of delta_phi (-kpx delta_phi must turn it "
                "back); a steady lag of a few degrees is a missing feed-forward.",
                orientation_tracking, "hw2-p2"},
-              {"d. in simulation lambda stays unit and continuous: link7 never turns half a turn from lambda_d", 1,
+              {id::kSimContinuous,
+               "d. in simulation lambda stays unit and continuous: link7 never turns half a turn from lambda_d", 1,
                "The library keeps lambda on the side of lambda_d; a jump means the orientation error reached "
                "180 degrees, i.e. the orientation feedback pushes away from lambda_d (sign of delta_phi).",
                euler_parameters_stay_continuous, "hw2-p2"},
-              {"d. in simulation no joint goes more than 5 degrees past its URDF limit", 1,
+              {id::kSimJointLimits, "d. in simulation no joint goes more than 5 degrees past its URDF limit", 1,
                "A correct law follows the reference's joint path; an arm that swings far from it has an "
                "unstable task (check delta_phi's sign) or an undamped null space.",
                joints_stay_near_their_limits, "hw2-p2"},
-              {"d. in simulation the arm repeats its motion every period: the null-space self-motion is damped", 2,
+              {id::kSimSelfMotion,
+               "d. in simulation the arm repeats its motion every period: the null-space self-motion is damped", 2,
                "Without N0^T A (-kvj dq) the elbow's self-motion is free: the task is tracked, but the arm's "
                "posture wanders a little more every period (and would eventually hit a joint limit).",
                self_motion_is_damped, "hw2-p2"},

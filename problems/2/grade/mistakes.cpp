@@ -5,12 +5,13 @@
 // the law's terms that moves nothing a test judges costs the law test alone. The comments say
 // what the run shows; its rubric (guide.md) lists the points each costs.
 #include <opspace/algorithms/euler_params.hpp>
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 #include <opspace/math/constants.hpp>
 
 #include <cmath>
 
 #include "mistakes.hpp"
+#include "problems/2/tests.hpp"
 
 namespace opspace::grading {
 
@@ -73,18 +74,14 @@ Vector7d without_a_dot_squared(const Fn<decltype(hw2::p2::desired_acceleration)>
 }  // namespace
 
 std::vector<Mistake> mistakes_2() {
-  const std::string a = "a. xddot_d is the second time derivative of x_d(t), as in the closed forms of 2(a)";
-  const std::string law =
-      "c. the controller applies J0^T (Lambda0 (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ xdot_d) "
-      "+ [vdot_d; wdot_d]) + p) + N0^T (A (-kvj dq) + g)";
-  const std::string position = "d. in simulation link7's origin follows the desired position within 1 mm RMS after 1 s";
-  const std::string orientation =
-      "d. in simulation link7's orientation follows lambda_d within 0.01 rad RMS after 1 s";
-  const std::string continuous =
-      "d. in simulation lambda stays unit and continuous: link7 never turns half a turn from lambda_d";
-  const std::string limits = "d. in simulation no joint goes more than 5 degrees past its URDF limit";
-  const std::string drift =
-      "d. in simulation the arm repeats its motion every period: the null-space self-motion is damped";
+  namespace id = test_id::p2;
+  const std::string a = id::kAcceleration;
+  const std::string law = id::kLaw;
+  const std::string position = id::kSimPosition;
+  const std::string orientation = id::kSimOrientation;
+  const std::string continuous = id::kSimContinuous;
+  const std::string limits = id::kSimJointLimits;
+  const std::string drift = id::kSimSelfMotion;
   const std::vector<std::string> law_and_run = {law, position, orientation, continuous, limits, drift};
   return {
       // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation

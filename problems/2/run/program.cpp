@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 #include <problems/2/run/scenario.hpp>
 #include <problems/2/run/pictures.hpp>
 #include <opspace/visuals/visuals.hpp>

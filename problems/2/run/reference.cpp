@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <opspace/hw2/p2.hpp>
+#include <problems/2/contract.hpp>
 #include <opspace/model/urdf.hpp>
 #include <opspace/programs/reference_text.hpp>
 #include <problems/2/run/scenario.hpp>

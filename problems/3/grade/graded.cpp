@@ -18,6 +18,7 @@
 #include "oracles.hpp"
 #include "run_figure.hpp"
 #include "graded_suite.hpp"
+#include "problems/3/tests.hpp"
 #include "support/random.hpp"
 
 namespace opspace::grading {
@@ -232,33 +233,35 @@ void contact_kept(const Hw2Api& api, Check& check) {
 }  // namespace
 
 Problem problem_3() {
+  namespace id = test_id::p3;
   return {"3",
           "KUKA iiwa: unified motion and force control against a plane (simulated)",
           {
-              {"a. Omega selects F_y, F_z, M_x (motion) and Omega-bar selects F_x, M_y, M_z (force)", 2,
+              {id::kSelection, "a. Omega selects F_y, F_z, M_x (motion) and Omega-bar selects F_x, M_y, M_z (force)", 2,
                "Both are constant diagonal 0/1 matrices because F_d is given in the base frame; "
                "Omega + Omega-bar = I. Order of [F; M]: F_x, F_y, F_z, M_x, M_y, M_z.",
                selection_matrices},
-              {"b. the controller applies J0^T (Lambda0 Omega (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ "
+              {id::kLaw,
+               "b. the controller applies J0^T (Lambda0 Omega (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ "
                "xdot_d) + [vdot_d; wdot_d]) + p + Omega-bar F_d) + N0^T (A (-kvj dq) + g)",
                4,
                "Omega filters the motion command before Lambda0; the force goal.F_d is filtered by Omega-bar and "
                "added after Lambda0 (it is a force, not an acceleration). E^+ at the CURRENT s.lambda.",
                law},
-              {"c. in simulation the tool pushes on the plane with 10 N (mean error after 1 s)", 3,
+              {id::kSimForce, "c. in simulation the tool pushes on the plane with 10 N (mean error after 1 s)", 3,
                "Far more than 10 N: the force went through Lambda0. Less: a motion command still acts along x.",
                contact_force, "hw2-p3"},
-              {"c. in simulation the tool face stays flat on the plane", 2,
+              {id::kSimFlat, "c. in simulation the tool face stays flat on the plane", 2,
                "A tilted disc presses with its rim: a moment about y or z is applied (Omega-bar F_d has none), or "
                "the arm is not pressing the tool on the plane at all.",
                tool_flat, "hw2-p3"},
-              {"c. in simulation link7's origin follows y_d and z_d", 2,
+              {id::kSimPosition, "c. in simulation link7's origin follows y_d and z_d", 2,
                "y and z are motion directions: the PD with feed-forward through Lambda0 Omega.",
                yz_tracking, "hw2-p3"},
-              {"c. in simulation link7 follows the rotation about x of lambda_d", 2,
+              {id::kSimRotation, "c. in simulation link7 follows the rotation about x of lambda_d", 2,
                "The rotation about x is a motion direction: delta_phi's x component with feed-forward.",
                rotation_tracking, "hw2-p3"},
-              {"c. in simulation the tool never leaves the plane after the first second", 1,
+              {id::kSimContact, "c. in simulation the tool never leaves the plane after the first second", 1,
                "The force F_x = 10 N presses the tool at all times; losing contact means the x direction is "
                "motion-controlled or the force has the wrong sign.",
                contact_kept, "hw2-p3"},

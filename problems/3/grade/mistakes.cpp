@@ -4,9 +4,10 @@
 // the run's torque the law's (F_d without Omega-bar, with the run's F_d along x) costs the law
 // test alone. its rubric (guide.md) lists the points each costs.
 #include <opspace/algorithms/euler_params.hpp>
-#include <opspace/hw2/p3.hpp>
+#include <problems/3/contract.hpp>
 
 #include "mistakes.hpp"
+#include "problems/3/tests.hpp"
 #include "answers.hpp"
 #include "oracles.hpp"
 
@@ -52,15 +53,14 @@ Vector7d with(const State& s, const Goal& goal) {
 }  // namespace
 
 std::vector<Mistake> mistakes_3() {
-  const std::string selection = "a. Omega selects F_y, F_z, M_x (motion) and Omega-bar selects F_x, M_y, M_z (force)";
-  const std::string law =
-      "b. the controller applies J0^T (Lambda0 Omega (-kpx [x_p - x_pd; delta_phi] - kvx ([v; w] - E^+ "
-      "xdot_d) + [vdot_d; wdot_d]) + p + Omega-bar F_d) + N0^T (A (-kvj dq) + g)";
-  const std::string force = "c. in simulation the tool pushes on the plane with 10 N (mean error after 1 s)";
-  const std::string flat = "c. in simulation the tool face stays flat on the plane";
-  const std::string yz = "c. in simulation link7's origin follows y_d and z_d";
-  const std::string rx = "c. in simulation link7 follows the rotation about x of lambda_d";
-  const std::string kept = "c. in simulation the tool never leaves the plane after the first second";
+  namespace id = test_id::p3;
+  const std::string selection = id::kSelection;
+  const std::string law = id::kLaw;
+  const std::string force = id::kSimForce;
+  const std::string flat = id::kSimFlat;
+  const std::string yz = id::kSimPosition;
+  const std::string rx = id::kSimRotation;
+  const std::string kept = id::kSimContact;
   return {
       // x becomes motion-controlled to x_d = 0, where the face rests on the plane (p3's start):
       // it touches but never pushes, so every contact test fails, the flat one included ("the

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include <opspace/hw2/p3.hpp>
+#include <problems/3/contract.hpp>
 #include <problems/3/run/scenario.hpp>
 #include <problems/3/run/pictures.hpp>
 #include <opspace/visuals/visuals.hpp>

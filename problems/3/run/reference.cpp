@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <opspace/hw2/p3.hpp>
+#include <problems/3/contract.hpp>
 #include <opspace/programs/reference_text.hpp>
 #include <problems/3/run/scenario.hpp>
 

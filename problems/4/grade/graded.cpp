@@ -19,6 +19,7 @@
 #include "oracles.hpp"
 #include "run_figure.hpp"
 #include "graded_suite.hpp"
+#include "problems/4/tests.hpp"
 #include "support/random.hpp"
 
 namespace opspace::grading {
@@ -382,44 +383,51 @@ void reaches(Target target, const Hw2Api& api, Check& check) {
 }  // namespace
 
 Problem problem_4() {
+  namespace id = test_id::p4;
   return {"4",
           "3R elbow arm: singularities, analysed and controlled (simulated)",
           {
-              {"i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv", 2,
+              {id::kRank, "i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv", 2,
                "Take the SVD of Jv and count the singular values above kTolerance * sigma_max.",
                degrees_of_freedom},
-              {"ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv "
+              {id::kDirections,
+               "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv "
                "elsewhere",
                3,
                "A singular direction is a direction of the tip's space, so it is a column of U (Jv = U S V^T), "
                "not of V, which lives in joint space.",
                singular_directions},
-              {"iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0", 2,
+              {id::kDirectionLeft,
+               "iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0", 2,
                "The moving directions are the other columns of U; the rotation axes come from the SVD of Jw.",
                orthogonal_directions},
-              {"iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I elbow lock along "
+              {id::kStraightUpTypes,
+               "iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I elbow lock along "
                "Z0 and a Type II overhead lock across its plane",
                2,
                "Test the self-motions only: the null-space basis Nb of Jv, then C = Nb^T H_u Nb, from the Kinematics "
                "given (the arm may be turned about Z0).",
                types_of_the_straight_up_arm},
-              {"iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one", 2,
+              {id::kTypesElsewhere,
+               "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one", 2,
                "The type is a property of the direction and the configuration: use H_u = sum_k u_k H[k] and the "
                "null space of Jv at that configuration.",
                types_elsewhere},
-              {"v. the controller applies Jv^T F + N^T (A (-kpj (q - q_d) - kvj dq) + g) with each target's "
+              {id::kLaw, "v. the controller applies Jv^T F + N^T (A (-kpj (q - q_d) - kvj dq) + g) with each target's "
                "potential",
                3,
                "For Z0 the potential's minimum is the retracted arm, q_d[2] = kRetractedElbow; for Y0 it is "
                "joint 1 at q_d[0] = kTurnedJoint1; the other joints keep q_d = q.",
                law},
-              {"v. in simulation the tip reaches 10 cm down along Z0 within 2 s where the plain controller "
+              {id::kSimAlongZ0,
+               "v. in simulation the tip reaches 10 cm down along Z0 within 2 s where the plain controller "
                "saturates",
                3,
                "Along Z0 the arm must retract first: only the elbow potential, projected by N^T, gets it out of "
                "the lock.",
                [](const Hw2Api& api, Check& check) { reaches(Target::kAlongZ0, api, check); }, "hw2-p4 z"},
-              {"v. in simulation the tip reaches 10 cm along Y0 within 2 s where the plain controller never "
+              {id::kSimAlongY0,
+               "v. in simulation the tip reaches 10 cm along Y0 within 2 s where the plain controller never "
                "does",
                3,
                "Along Y0 the arm's plane must first turn to face Y0: drive joint 1 toward 90 deg in the null "

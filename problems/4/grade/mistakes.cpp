@@ -1,12 +1,13 @@
 // Known mistakes of problem 4. Each replaces one function, or wraps the law it is given (the
 // reference solutions, or the grader's oracle).
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 #include <opspace/algorithms/linalg.hpp>
 #include <problems/4/run/scenario.hpp>
 
 #include <cmath>
 
 #include "mistakes.hpp"
+#include "problems/4/tests.hpp"
 
 namespace opspace::grading {
 
@@ -64,17 +65,13 @@ Eigen::Vector3d z0_potential_stretches(const Law& law, Target target, const Stat
 }  // namespace
 
 std::vector<Mistake> mistakes_4() {
-  const std::string dirs = "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null "
-                           "space of Jv elsewhere";
-  const std::string types0 = "iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I "
-                             "elbow lock along Z0 and a Type II overhead lock across its plane";
-  const std::string types = "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one";
-  const std::string law = "v. the controller applies Jv^T F + N^T (A (-kpj (q - q_d) - kvj dq) + g) with each "
-                          "target's potential";
-  const std::string simz = "v. in simulation the tip reaches 10 cm down along Z0 within 2 s where the plain "
-                           "controller saturates";
-  const std::string simy = "v. in simulation the tip reaches 10 cm along Y0 within 2 s where the plain controller "
-                           "never does";
+  namespace id = test_id::p4;
+  const std::string dirs = id::kDirections;
+  const std::string types0 = id::kStraightUpTypes;
+  const std::string types = id::kTypesElsewhere;
+  const std::string law = id::kLaw;
+  const std::string simz = id::kSimAlongZ0;
+  const std::string simy = id::kSimAlongY0;
   return {
       {"singular directions from the right singular vectors V",
        "a singular direction lives in the tip's space: the columns of U (Jv = U S V^T) whose sigma vanishes",

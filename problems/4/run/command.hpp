@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 
 #include <opspace/programs/cli.hpp>
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 #include <opspace/math/constants.hpp>
 #include <problems/4/run/scenario.hpp>
 #include <problems/4/run/pictures.hpp>

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include <opspace/hw2/p4.hpp>
+#include <problems/4/contract.hpp>
 #include <opspace/math/constants.hpp>
 #include <opspace/model/urdf.hpp>
 #include <opspace/programs/reference_text.hpp>
@@ -134,5 +134,5 @@ std::string fragment(const Runs& runs) {
 
 cli::ReferenceText reference_run_4() {
   const Runs runs = run_targets();
-  return {{"opspace/hw2/p4.hpp", "problems/4/run/scenario.hpp"}, declarations(runs), {{"p4-reference", fragment(runs)}}};
+  return {{"problems/4/contract.hpp", "problems/4/run/scenario.hpp"}, declarations(runs), {{"p4-reference", fragment(runs)}}};
 }

@@ -1,5 +1,5 @@
 // Attack: close every descriptor and keep running, so that the grader waits forever.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 #include <unistd.h>
 
 namespace opspace::hw2::p1b {

@@ -1,6 +1,6 @@
 // Attack: a detached grandchild (new session, double fork) that rewrites results.json after
 // the grader has written it, and leaves a marker.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 #include <unistd.h>
 
 #include <cstdio>

@@ -1,5 +1,5 @@
 // A 1b controller that misbehaves as a student's might: FAULT is segfault, hang, throw or nan.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <limits>
 #include <string>

@@ -2,7 +2,7 @@
 // The first calls of each runner write up to the sandbox's file size limit; every later call
 // could only truncate and write the same files again, which cost 19 s of kernel time in the
 // simulation tests (thousands of calls) and proves nothing more.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <cstdio>
 #include <vector>

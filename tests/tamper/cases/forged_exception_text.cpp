@@ -3,7 +3,7 @@
 // on screen, and a C1 control (NEL, U+0085) that some viewers take for a line break. The earlier
 // grader kept the newlines (only bytes below 0x20 but newline and tab, and 0x7f, were replaced),
 // so the report and results.json showed a "PASS" line per test and "Total: @TOTAL@ / @TOTAL@ points".
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <stdexcept>
 

@@ -1,6 +1,6 @@
 // Attack: forge the grader's channel. Writes lines in the old grader's result format and a
 // well-formed answer header for a later request on every descriptor, then answers as a stub.
-#include <opspace/hw2/p1a.hpp>
+#include <problems/1a/contract.hpp>
 #include <unistd.h>
 
 #include <cstdint>

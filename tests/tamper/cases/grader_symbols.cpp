@@ -1,5 +1,5 @@
 // Attack: define the grader's own functions, hoping to replace them at link time.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <string>
 #include <vector>

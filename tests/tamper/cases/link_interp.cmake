@@ -6,9 +6,9 @@
 # first NUL. Either way the runner's loader stays the system's and the archive stays unseen.
 # The reference p4 answers only if the archive is visible at run time: problem 4 must earn 0.
 set(TARGET p4.cpp)
-set(FROM "#include <opspace/hw2/p4.hpp>")
+set(FROM "#include <problems/4/contract.hpp>")
 set(archives "${REPO}/build/release/lib/libopspace_core.a;${REPO}/build/asan/lib/libopspace_core.a;${REPO}/build/debug/lib/libopspace_core.a")
-set(TO "#include <opspace/hw2/p4.hpp>
+set(TO "#include <problems/4/contract.hpp>
 
 #include <unistd.h>
 

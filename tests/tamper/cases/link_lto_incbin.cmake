@@ -90,7 +90,7 @@ endforeach()
 if(NOT asm MATCHES "\\.gnu\\.lto_\\.asm")
   message(FATAL_ERROR "link_lto_incbin: the bytecode holds no top-level asm section")
 endif()
-set(FROM "#include <opspace/hw2/p4.hpp>")
+set(FROM "#include <problems/4/contract.hpp>")
 set(TO "${FROM}")
 file(WRITE "${WORK}/exercises/${TARGET}"
      "${FROM}\n// Problem 4 as GCC LTO bytecode, compiled and assembled by the linker plugin in the link stage.\n"

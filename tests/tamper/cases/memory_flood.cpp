@@ -1,5 +1,5 @@
 // Attack: exhaust the machine's memory.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <cstring>
 #include <vector>

@@ -1,5 +1,5 @@
 // Attack: reach the network (loopback, then anything) and say so in the feedback.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>

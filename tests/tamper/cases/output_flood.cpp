@@ -1,5 +1,5 @@
 // Attack: flood the grader with output (20 MiB on stdout and stderr), and forge report lines.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <cstdio>
 #include <string>

@@ -3,7 +3,7 @@
 // of each runner fill its process limit (RLIMIT_NPROC). Every later call could only repeat forks
 // that fail, which cost the machine 38 s of kernel time in the simulation tests (thousands of
 // calls, 300 failing forks each) and prove nothing more.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 #include <unistd.h>
 
 #include <cstdio>

@@ -1,6 +1,6 @@
 // Attack: read the reference solution and the graded tests at run time and carry them out in
 // the feedback (prints and an exception's text).
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <fstream>
 #include <iostream>

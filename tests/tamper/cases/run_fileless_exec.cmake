@@ -4,8 +4,8 @@
 # execve("/proc/self/fd/N"), is refused too (seccomp: execveat never, execve only with that
 # pointer). The reference p4 answers only if the copy ran: problem 4 must earn 0.
 set(TARGET p4.cpp)
-set(FROM "#include <opspace/hw2/p4.hpp>")
-set(TO [=[#include <opspace/hw2/p4.hpp>
+set(FROM "#include <problems/4/contract.hpp>")
+set(TO [=[#include <problems/4/contract.hpp>
 
 #include <fcntl.h>
 #include <sys/mman.h>

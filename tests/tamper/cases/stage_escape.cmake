@@ -14,9 +14,9 @@
 #   process       a runner starts a second process (fork, vfork, clone, clone3), which would
 #                 have an address space and its 1 GiB limit of its own
 set(TARGET p4.cpp)
-set(FROM "#include <opspace/hw2/p4.hpp>")
+set(FROM "#include <problems/4/contract.hpp>")
 set(ROUTE "${FAULT}")
-string(CONFIGURE [=[#include <opspace/hw2/p4.hpp>
+string(CONFIGURE [=[#include <problems/4/contract.hpp>
 
 #include <fcntl.h>
 #include <glob.h>

@@ -1,6 +1,6 @@
 // Attack: code that runs before main and at exit, in the runner: forge results.json, leave a
 // marker, and run the reference grader to print its full-score report.
-#include <opspace/hw2/p1b.hpp>
+#include <problems/1b/contract.hpp>
 
 #include <cstdio>
 #include <cstdlib>

@@ -6,7 +6,7 @@
 # counted it as its own fault.
 set(TARGET p1a.cpp)
 string(REPEAT "x" 40000 long)
-set(FROM "#include <opspace/hw2/p1a.hpp>\n")
+set(FROM "#include <problems/1a/contract.hpp>\n")
 set(TO "${FROM}
 asm(\".macro opspace_flood_ref\\n.quad opspace_flood_${long}_\\\\@\\n.endm\\n\"
     \".pushsection .data.opspace_flood,\\\"aw\\\"\\n.rept 2000\\nopspace_flood_ref\\n.endr\\n.popsection\\n\");
