@@ -168,7 +168,7 @@ bool load_report(const std::string& path, BuiltRunner& built) {
 bool add_answers(const Toolchain& toolchain, const std::string& key, const std::string& which, const std::string& file,
                  const std::string& work, const BuildSettings& settings, const std::string& shown_as,
                  const std::string& what, BuiltRunner& built) {
-  const SymbolList list = list_symbols(toolchain.nm, which, file, work, settings, shown_as, what);
+  const SymbolList list = list_symbols(toolchain.nm_command(), which, file, work, settings, shown_as, what);
   if (list.fault != Fault::none) return stop(built, list.fault, list.error);
   for (const std::string& answer : answers_among(key, list.names))
     if (std::find(built.answers.begin(), built.answers.end(), answer) == built.answers.end()) built.answers.push_back(answer);
@@ -322,6 +322,7 @@ Toolchain load_toolchain(const std::string& path) {
     else if (key == "headers") t.headers.push_back(value);
     else if (key == "archive") t.archives.push_back(value);
     else if (key == "nm") t.nm = value;
+    else if (key == "nm-plugin") t.nm_plugin = value;
     else if (key.rfind("inputs-", 0) == 0) {
       const std::string problem = key.substr(7);
       auto it = std::find_if(t.inputs.begin(), t.inputs.end(), [&](const auto& p) { return p.first == problem; });
@@ -337,13 +338,20 @@ Toolchain load_toolchain(const std::string& path) {
   return t;
 }
 
-SymbolList list_symbols(const std::string& nm, const std::string& which, const std::string& file, const std::string& work,
-                        const BuildSettings& settings, const std::string& shown_as, const std::string& what,
-                        std::size_t max_size) {
+std::vector<std::string> Toolchain::nm_command() const {
+  if (nm_plugin.empty()) return {nm};
+  return {nm, "--plugin", nm_plugin};
+}
+
+SymbolList list_symbols(const std::vector<std::string>& nm, const std::string& which, const std::string& file,
+                        const std::string& work, const BuildSettings& settings, const std::string& shown_as,
+                        const std::string& what, std::size_t max_size) {
   SymbolList list;
   ToolResult run;
   try {
-    run = run_tool({nm, "-C", "-P", which, file}, work, {fs::path(file).parent_path().string()}, settings, max_size);
+    std::vector<std::string> argv = nm;
+    argv.insert(argv.end(), {"-C", "-P", which, file});
+    run = run_tool(argv, work, {fs::path(file).parent_path().string()}, settings, max_size);
   } catch (const std::exception& e) {
     list.fault = Fault::grader;
     list.error = "the grader could not run nm on " + shown_as + ": " + e.what();
