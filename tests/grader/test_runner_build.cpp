@@ -1,6 +1,7 @@
 // nm's symbol lists of a runner's build (grader/trusted/runner_build.hpp, list_symbols): a list
 // over the grader's bound is the submission's doing and says so, naming the file and the sizes;
-// nm that cannot be started is the grader's. nm runs outside the sandbox here (isolate off): what
+// nm that cannot be started is the grader's. And the tools the build's toolchain file chose:
+// nm's plugin and the linker, each against what the compiler says here. nm runs outside the sandbox here (isolate off): what
 // is tested is who is blamed, not the sandbox.
 #include <doctest/doctest.h>
 #include <unistd.h>
