@@ -413,8 +413,8 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   // The answers the file refers to, by any kind of reference ("U", or "w" and "v" for a weak or
   // aliased declaration, which pull nothing into the link but name what the file reaches for),
   // listed while the runner is linked (both read the grader's copy of the object; nm writes in
-  // a folder of its own): 0.06-0.1 s less of an edit graded again, on the second core. Its
-  // failure still comes first, whatever the link did.
+  // a folder of its own): nm and its sandbox's start leave an edit's path for the second core.
+  // Its failure still comes first, whatever the link did.
   std::future<SymbolList> referred = std::async(std::launch::async, [&] {
     return list_symbols(toolchain.nm_command(), "--undefined-only", stages.object, stages.listed, settings, shown_as,
                         "the names it refers to");
