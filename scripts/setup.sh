@@ -31,6 +31,10 @@ if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
   OPSPACE_OPTIONAL_PACKAGES+=(nodejs npm)
 fi
 
+# dpkg's database, rewritten by every install and removal (tests/scripts/check_package_stamp.sh
+# points it elsewhere).
+OPSPACE_DPKG_STATUS="${OPSPACE_DPKG_STATUS:-/var/lib/dpkg/status}"
+
 opspace_say() { printf 'opspace: %s\n' "$*" >&2; }
 
 # 1 once opspace_install_packages has installed something (opspace_configure then runs CMake
@@ -59,12 +63,23 @@ opspace_install_packages() {
     opspace_say "and, for plots and the 3D replay: ${wanted[*]}"
     return 0
   fi
-  local missing optional
-  mapfile -t missing < <(opspace_missing "${OPSPACE_PACKAGES[@]}")
-  mapfile -t optional < <(opspace_missing "${wanted[@]}")
   # Optional packages that could not be installed once (listed in this file) are not retried
   # on every command.
   local optional_failed="$OPSPACE_ROOT/build/optional-packages-failed"
+  # A check that found every package is remembered (this file: the packages it checked) until
+  # dpkg's database changes: an install or a removal rewrites /var/lib/dpkg/status. Its two
+  # queries were 0.06 s of every grade (issue 50).
+  local present="$OPSPACE_ROOT/build/packages-present" checked="${OPSPACE_PACKAGES[*]} ${wanted[*]}" line=""
+  if [ -f "$present" ] && [ "$present" -nt "$OPSPACE_DPKG_STATUS" ] && [ ! -e "$optional_failed" ]; then
+    IFS= read -r line < "$present" || true
+    [ "$line" = "$checked" ] && return 0
+  fi
+  local missing optional
+  mapfile -t missing < <(opspace_missing "${OPSPACE_PACKAGES[@]}")
+  mapfile -t optional < <(opspace_missing "${wanted[@]}")
+  if [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && [ -f "$OPSPACE_DPKG_STATUS" ]; then
+    mkdir -p "$(dirname "$present")" && printf '%s\n' "$checked" > "$present"
+  fi
   if [ -f "$optional_failed" ] && [ ${#optional[@]} -gt 0 ]; then
     mapfile -t optional < <(printf '%s\n' "${optional[@]}" | grep -vxF -f "$optional_failed" || true)
   fi

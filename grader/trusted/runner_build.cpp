@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <sstream>
 #include <stdexcept>
 
@@ -162,13 +163,9 @@ bool load_report(const std::string& path, BuiltRunner& built) {
   return true;
 }
 
-// The library answers of problem `key` among the symbols nm lists of `file` (`which`:
-// --defined-only, --undefined-only), added to built.answers. False, with built.error, if the
-// list could not be read whole (list_symbols).
-bool add_answers(const Toolchain& toolchain, const std::string& key, const std::string& which, const std::string& file,
-                 const std::string& work, const BuildSettings& settings, const std::string& shown_as,
-                 const std::string& what, BuiltRunner& built) {
-  const SymbolList list = list_symbols(toolchain.nm, which, file, work, settings, shown_as, what);
+// The library answers of problem `key` among the symbols of `list`, added to built.answers.
+// False, with built.error, if the list could not be read whole (list_symbols).
+bool add_answers(const std::string& key, const SymbolList& list, BuiltRunner& built) {
   if (list.fault != Fault::none) return stop(built, list.fault, list.error);
   for (const std::string& answer : answers_among(key, list.names))
     if (std::find(built.answers.begin(), built.answers.end(), answer) == built.answers.end()) built.answers.push_back(answer);
@@ -195,7 +192,7 @@ std::string cache_key(const Toolchain& toolchain, const std::string& key, const 
 // the grader's copy of what it wrote. The source is `text`, the bytes the cache key was taken
 // from, written by the grader.
 struct Stages {
-  std::string work, source, compiled, objects, linked, headers_dir, archives_dir;
+  std::string work, source, compiled, objects, linked, listed, headers_dir, archives_dir;
   std::string source_file, object, runner;
   Staged headers;
   std::vector<std::string> roots;  // the include roots, as the compiler sees them
@@ -207,6 +204,7 @@ struct Stages {
         compiled(make_folder(work + "/compiled", true, account)),
         objects(make_folder(work + "/objects", false, account)),
         linked(make_folder(work + "/linked", true, account)),
+        listed(make_folder(work + "/listed", true, account)),
         headers_dir(make_folder(work + "/headers", false, account)),
         archives_dir(make_folder(work + "/archives", false, account)),
         source_file(source + "/" + fs::path(shown_as).filename().string()),
@@ -322,6 +320,7 @@ Toolchain load_toolchain(const std::string& path) {
     else if (key == "headers") t.headers.push_back(value);
     else if (key == "archive") t.archives.push_back(value);
     else if (key == "nm") t.nm = value;
+    else if (key == "nm-plugin") t.nm_plugin = value;
     else if (key.rfind("inputs-", 0) == 0) {
       const std::string problem = key.substr(7);
       auto it = std::find_if(t.inputs.begin(), t.inputs.end(), [&](const auto& p) { return p.first == problem; });
@@ -337,13 +336,20 @@ Toolchain load_toolchain(const std::string& path) {
   return t;
 }
 
-SymbolList list_symbols(const std::string& nm, const std::string& which, const std::string& file, const std::string& work,
-                        const BuildSettings& settings, const std::string& shown_as, const std::string& what,
-                        std::size_t max_size) {
+std::vector<std::string> Toolchain::nm_command() const {
+  if (nm_plugin.empty()) return {nm};
+  return {nm, "--plugin", nm_plugin};
+}
+
+SymbolList list_symbols(const std::vector<std::string>& nm, const std::string& which, const std::string& file,
+                        const std::string& work, const BuildSettings& settings, const std::string& shown_as,
+                        const std::string& what, std::size_t max_size) {
   SymbolList list;
   ToolResult run;
   try {
-    run = run_tool({nm, "-C", "-P", which, file}, work, {fs::path(file).parent_path().string()}, settings, max_size);
+    std::vector<std::string> argv = nm;
+    argv.insert(argv.end(), {"-C", "-P", which, file});
+    run = run_tool(argv, work, {fs::path(file).parent_path().string()}, settings, max_size);
   } catch (const std::exception& e) {
     list.fault = Fault::grader;
     list.error = "the grader could not run nm on " + shown_as + ": " + e.what();
@@ -405,15 +411,29 @@ BuiltRunner build_runner(const Toolchain& toolchain, const std::string& key, con
   const Stages stages(folder.path(), shown_as, text, toolchain, settings.account);
   if (!compile_stage(toolchain, stages, shown_as, settings, built)) return built;
   // The answers the file refers to, by any kind of reference ("U", or "w" and "v" for a weak or
-  // aliased declaration, which pull nothing into the link but name what the file reaches for).
-  if (!add_answers(toolchain, key, "--undefined-only", stages.object, stages.linked, settings, shown_as,
-                   "the names it refers to", built))
+  // aliased declaration, which pull nothing into the link but name what the file reaches for),
+  // listed while the runner is linked (both read the grader's copy of the object; nm writes in
+  // a folder of its own): nm and its sandbox's start leave an edit's path for the second core.
+  // Its failure still comes first, whatever the link did.
+  std::future<SymbolList> referred = std::async(std::launch::async, [&] {
+    return list_symbols(toolchain.nm_command(), "--undefined-only", stages.object, stages.listed, settings, shown_as,
+                        "the names it refers to");
+  });
+  const bool linked = link_stage(toolchain, *inputs, stages, shown_as, settings, built);
+  const SymbolList referred_list = referred.get();
+  if (referred_list.fault != Fault::none) {
+    built.runtime.clear();  // as if the link had not run: its outcome is not this failure's
+    stop(built, referred_list.fault, referred_list.error);
     return built;
-  if (!link_stage(toolchain, *inputs, stages, shown_as, settings, built)) return built;
+  }
+  if (!linked) return built;
+  add_answers(key, referred_list, built);
   // What the runner holds of the library's answers, by whatever route they came in: its own
   // symbols (library_answers.hpp).
-  if (!add_answers(toolchain, key, "--defined-only", stages.runner, stages.linked, settings, shown_as,
-                   "the names its runner holds", built))
+  if (!add_answers(key,
+                   list_symbols(toolchain.nm_command(), "--defined-only", stages.runner, stages.linked, settings,
+                                shown_as, "the names its runner holds"),
+                   built))
     return built;
   match_oracles(key, built);
   const std::string tmp = temporary(cached);

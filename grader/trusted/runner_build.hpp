@@ -28,6 +28,11 @@ struct Toolchain {
   std::vector<std::string> headers;        ///< what the compiler must see of this build (read-only)
   std::vector<std::string> archives;       ///< what the linker must see of this build (read-only)
   std::string nm;                          ///< the nm program
+  /// The compiler's LTO plugin, which nm is told to load instead of every plugin of
+  /// bfd-plugins/ (10 ms instead of 70 where clang's LLVMgold is there); empty: nm as it is.
+  std::string nm_plugin;
+  /// nm and its options before the grader's: {nm} or {nm, --plugin, nm_plugin}.
+  std::vector<std::string> nm_command() const;
   std::string fingerprint;                 ///< changes when any of the above changes, or the grader is rebuilt
 };
 
@@ -69,14 +74,15 @@ struct SymbolList {
   Fault fault = Fault::none;
 };
 
-/// Lists the symbols of `file` with `nm` (`which`: --defined-only, --undefined-only) in the
-/// sandbox, writing in `work`. The list is kept whole or not at all, since a cut one could hide
+/// Lists the symbols of `file` with `nm` (the program and its first options,
+/// Toolchain::nm_command; `which`: --defined-only, --undefined-only) in the sandbox, writing in
+/// `work`. The list is kept whole or not at all, since a cut one could hide
 /// a library answer: one over `max_size` is the submission's ("exercises/p1a.cpp makes the
 /// symbol list over the 64 MiB the grader reads: ..."), as are nm's failure and time-out on
 /// its object; nm that cannot be started is the grader's. `what` names the list for the
 /// student: "the names it refers to".
-SymbolList list_symbols(const std::string& nm, const std::string& which, const std::string& file, const std::string& work,
-                        const BuildSettings& settings, const std::string& shown_as, const std::string& what,
-                        std::size_t max_size = kMaxSymbolList);
+SymbolList list_symbols(const std::vector<std::string>& nm, const std::string& which, const std::string& file,
+                        const std::string& work, const BuildSettings& settings, const std::string& shown_as,
+                        const std::string& what, std::size_t max_size = kMaxSymbolList);
 
 }  // namespace opspace::grading

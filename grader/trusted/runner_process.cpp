@@ -52,7 +52,8 @@ std::string seconds(double s) {
 
 }  // namespace
 
-RunnerProcess::RunnerProcess(RunnerConfig config) : config_(std::move(config)) {}
+RunnerProcess::RunnerProcess(RunnerConfig config)
+    : config_(std::move(config)), inbox_(sizeof(protocol::Header) + protocol::kMaxPayload) {}
 
 RunnerProcess::~RunnerProcess() { stop(); }
 
@@ -122,6 +123,7 @@ void RunnerProcess::start() {
 void RunnerProcess::stop() {
   close_fd(request_fd_);
   close_fd(answer_fd_);
+  inbox_begin_ = inbox_end_ = 0;  // the bytes of the pipe just closed
   close_fd(print_fd_);
   if (running_) kill_all(program_);
   running_ = false;
@@ -195,6 +197,17 @@ double RunnerProcess::cpu_seconds() const {
 void RunnerProcess::read_answer(void* out, std::size_t size) {
   auto* p = static_cast<unsigned char*>(out);
   while (size > 0) {
+    // What an earlier read brought beyond what it was asked for: the rest of this answer (its
+    // payload, read with its header), or whatever else the runner wrote, the next read's, in
+    // the order written, as if still in the pipe.
+    if (inbox_begin_ < inbox_end_) {
+      const std::size_t take = std::min(size, inbox_end_ - inbox_begin_);
+      std::memcpy(p, inbox_.data() + inbox_begin_, take);
+      inbox_begin_ += take;
+      p += take;
+      size -= take;
+      continue;
+    }
     // The CPU time is read from /proc every 50 ms of waiting at most: a tick's quick answer
     // costs no system call more.
     const auto now = std::chrono::steady_clock::now();
@@ -215,11 +228,13 @@ void RunnerProcess::read_answer(void* out, std::size_t size) {
     if (fds[1].revents & POLLIN) drain_prints(print_fd_);
     if (fds[1].revents & (POLLHUP | POLLERR) && !(fds[1].revents & POLLIN)) fds[1].fd = -1;
     if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-    const ssize_t n = read(answer_fd_, p, size);
+    // As much as the pipe holds, up to the inbox's size: an answer written whole comes in one
+    // read, its header and its payload.
+    const ssize_t n = read(answer_fd_, inbox_.data(), inbox_.size());
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) fail(ended_how());
-    p += n;
-    size -= static_cast<std::size_t>(n);
+    inbox_begin_ = 0;
+    inbox_end_ = static_cast<std::size_t>(n);
   }
 }
 
@@ -229,7 +244,8 @@ std::vector<unsigned char> RunnerProcess::call(protocol::Function function, cons
   if (!running_) start();
   const protocol::Header request{protocol::kRequestMagic, ++sequence_, static_cast<std::uint32_t>(function),
                                  static_cast<std::uint32_t>(arguments.size())};
-  std::vector<unsigned char> message(sizeof request + arguments.size());
+  std::vector<unsigned char>& message = outbox_;
+  message.resize(sizeof request + arguments.size());
   std::memcpy(message.data(), &request, sizeof request);
   std::copy(arguments.begin(), arguments.end(), message.begin() + sizeof request);
   // A request is a few kilobytes, less than a pipe holds: it cannot block for long, and a

@@ -110,6 +110,11 @@ class RunnerProcess {
   Fault fault_ = Fault::none;
   std::vector<Fault> test_faults_;
   Printed printed_;
+  // What was read from the answer pipe and not yet taken (read_answer): one read takes an
+  // answer's header and payload together. Emptied when the runner stops.
+  std::vector<unsigned char> inbox_;
+  std::size_t inbox_begin_ = 0, inbox_end_ = 0;
+  std::vector<unsigned char> outbox_;  // the request being sent, its memory reused from tick to tick
   Protections protections_;
   int starts_ = 0;
   unsigned long long memory_kills_ = 0;  ///< the grading's count when it started (grading_group.hpp)
