@@ -85,8 +85,15 @@ fi
 # earns no more than its honest share, all on this machine, with its kernel and container. Twice
 # as many at once as there are cores: a tamper case spends most of its time in the 4 s pause that
 # lets anything a submission left behind act (tests/tamper/run_case.cmake).
-say "proving the build: ctest -R '^(graded|grader|tamper): '"
-ctest --test-dir "$BUILD" -R '^(graded|grader|tamper): ' --parallel "$((2 * jobs))" --output-on-failure > "$ROOT/setup-proof.log" 2>&1 ||
+# OPSPACE_SETUP_PROOF narrows it to the tests its regular expression names: for
+# tests/deploy/autograder.sh alone, whose clone's release suite ran the whole proof already.
+proof='^(graded|grader|tamper): '
+if [ -n "${OPSPACE_SETUP_PROOF:-}" ]; then
+  say "the proof narrowed by OPSPACE_SETUP_PROOF (the whole proof is ctest -R '$proof')"
+  proof=$OPSPACE_SETUP_PROOF
+fi
+say "proving the build: ctest -R '$proof'"
+ctest --test-dir "$BUILD" -R "$proof" --no-tests=error --parallel "$((2 * jobs))" --output-on-failure > "$ROOT/setup-proof.log" 2>&1 ||
   { grep -E 'tests passed|Failed|\*\*\*' "$ROOT/setup-proof.log" | tail -30; fail "the proof failed (log: $ROOT/setup-proof.log)"; }
 grep -E 'tests passed|Skipped|SKIPPED' "$ROOT/setup-proof.log" || true
 

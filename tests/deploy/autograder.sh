@@ -12,8 +12,8 @@
 # With ccache installed (scripts/setup.sh's test packages), setup.sh's build takes each object
 # that this tree's build or an earlier run compiled from the same source and flags from ccache's
 # store: what it still proves is that the bundle holds everything the grader needs and that
-# setup.sh configures, builds, proves and locks it down; that the sources compile, the build of
-# this tree proves. Without ccache it compiles everything.
+# setup.sh configures, builds, proves (four tests, below) and locks it down; that the sources
+# compile, the build of this tree proves. Without ccache it compiles everything.
 # One image per bundle: the set-up ROOT lives in IMAGES/<fingerprint> (default
 # REPO/build/autograder-images), the fingerprint being the SHA-256 of every file of the zip
 # with its path and mode. A second run with the identical bundle (the test run again in the
@@ -35,6 +35,17 @@ check="$repo/tests/deploy/check_json.cmake"
 seconds() { echo $(( $(date +%s) - $1 )); }
 images=${3:-$repo/build/autograder-images}
 options=(--hidden "in simulation")  # grader options pass through the bundle
+# setup.sh's proof, narrowed to one test of each kind it runs (graded, grader, tamper: two, the
+# reference's file and the runner's view): this clone's release suite, where this test runs,
+# runs all of them once (CI proves each thing once: docs/ci.md). What is left proves that the
+# bundle's tree holds the proof, that it runs as setup.sh runs it, and that it passes.
+proof_tests=(
+  'graded:the reference solutions earn full marks on every graded test'
+  'grader: --seed replays'
+  'tamper: including the reference solution by its absolute path does not compile'
+  'tamper: a runner sees no compiler, assembler or linker'
+)
+proof="^($(IFS='|'; echo "${proof_tests[*]}"))"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
 fresh_work "$work"
 mkdir -p "$images"
@@ -62,7 +73,9 @@ else
     { echo "setup.sh and an executable run_autograder must be at the top of the zip"; exit 1; }
   cp "$root/source/run_autograder" "$root/source/setup.sh" "$root/"
   start=$(date +%s)
-  (cd "$root/source" && AUTOGRADER_ROOT="$root" bash ./setup.sh)
+  (cd "$root/source" && AUTOGRADER_ROOT="$root" OPSPACE_SETUP_PROOF="$proof" bash ./setup.sh)
+  grep -q "100% tests passed, 0 tests failed out of ${#proof_tests[@]}\$" "$root/setup-proof.log" ||
+    { cat "$root/setup-proof.log"; echo "setup.sh's proof did not run the ${#proof_tests[@]} tests it was given"; exit 1; }
   echo "TIME setup.sh: $(seconds "$start") s (load: $(cut -d' ' -f1-3 /proc/loadavg))"
   date -u '+%Y-%m-%d %H:%M:%S UTC' > "$root/setup-done"
 fi
