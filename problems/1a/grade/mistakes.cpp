@@ -12,20 +12,19 @@ using hw2::p1a::DisplacementSplit;
 
 std::vector<Mistake> mistakes_1a() {
   namespace id = test_id::p1a;
-  const std::string mass = id::kMassMatrix;
   return {
       {"A without the coupling term: m2 left off the diagonal",
        "link 2 rides on link 1, so T = 1/2 m1 d1dot^2 + 1/2 m2 (d1dot + d2dot)^2 and A = [m1 + m2, m2; m2, m2]",
        [](Hw2Api& api) {
          api.p1a.mass_matrix = [](double m1, double m2) { return Eigen::Matrix2d(Eigen::Vector2d(m1 + m2, m2).asDiagonal()); };
        },
-       {mass}},
+       {id::kMassMatrix}},
       {"A with m1 alone in its first entry",
        "the first entry is m1 + m2: moving d1 carries link 2 along",
        [](Hw2Api& api) {
          api.p1a.mass_matrix = [](double m1, double m2) { return (Eigen::Matrix2d() << m1, m2, m2, m2).finished(); };
        },
-       {mass}},
+       {id::kMassMatrix}},
       {"J+ = J^T, without (J J^T)^-1",
        "J+ = J^T (J J^T)^-1",
        [](Hw2Api& api) { api.p1a.pseudo_inverse = [](const Eigen::RowVector2d& J) { return Eigen::Vector2d(J.transpose()); }; },

@@ -37,13 +37,6 @@ bool nullspace_part(Part part) {
 
 std::vector<Mistake> mistakes_1b() {
   namespace id = test_id::p1b;
-  const std::string law1 = id::kLawPart1;
-  const std::string law1n = id::kLawWithoutDamping;
-  const std::string sim1 = id::kSimPart1;
-  const std::string law2 = id::kLawPart2;
-  const std::string law3 = id::kLawPart3;
-  const std::string sim3 = id::kSimPart3;
-  const std::string ratio = id::kSimDriftRatio;
   return {
       // PART3 then drifts like PART2: the ratio test sees two equal drifts.
       {"PART3 projects with the pseudo-inverse, like PART2",
@@ -53,7 +46,7 @@ std::vector<Mistake> mistakes_1b() {
            return law(part == Part::kDynamicallyConsistentNullspace ? Part::kPseudoInverseNullspace : part, s, g);
          };
        },
-       {law3, sim3, ratio}},
+       {id::kLawPart3, id::kSimPart3, id::kSimDriftRatio}},
       // In PART3 the tip is still held (the projection is dynamically consistent) but joint 2 sags
       // under the gravity left uncompensated in the null space; PART2's law is wrong too, which
       // the ratio test's pin sees.
@@ -65,7 +58,7 @@ std::vector<Mistake> mistakes_1b() {
            return nullspace_part(part) ? Vector6d(tau - projector(part, s) * s.g) : tau;
          };
        },
-       {law2, law3, sim3, ratio}},
+       {id::kLawPart2, id::kLawPart3, id::kSimPart3, id::kSimDriftRatio}},
       // A route, not a slip: a drift made to order. PART3's law held 5 cm below x_d drifts ~50 mm
       // RMS from x_d, over ten times PART3's, with joint 2 on q_d: the ratio test's behaviour
       // passes, and only the pin of PART2's law, with the law test, sees that it is not PART2's.
@@ -80,7 +73,7 @@ std::vector<Mistake> mistakes_1b() {
            return law(Part::kDynamicallyConsistentNullspace, s, off);
          };
        },
-       {law2, ratio}},
+       {id::kLawPart2, id::kSimDriftRatio}},
       // The unprojected share (I - P) g = Jv^T J_inv^T g compensates gravity at the tip a second
       // time: in PART3 the tip is pushed by p, tens of newtons against a stiffness of kpx Lambda_v,
       // and held centimetres off x_d, so PART3 no longer holds its tip nor drifts ten times less.
@@ -92,7 +85,7 @@ std::vector<Mistake> mistakes_1b() {
            return nullspace_part(part) ? Vector6d(tau + (Matrix6d::Identity() - projector(part, s)) * s.g) : tau;
          };
        },
-       {law2, law3, sim3, ratio}},
+       {id::kLawPart2, id::kLawPart3, id::kSimPart3, id::kSimDriftRatio}},
       {"PART3's projector written as Jv^T Jbar_v^T, without I -",
        "the projector is I - Jv^T Jbar_v^T: the joint task acts in the null space of the tip task",
        [](Hw2Api& api) {
@@ -103,7 +96,7 @@ std::vector<Mistake> mistakes_1b() {
            return Vector6d(tip + s.Jv.transpose() * s.Jbar_v.transpose() * joint);
          };
        },
-       {law3, sim3, ratio}},
+       {id::kLawPart3, id::kSimPart3, id::kSimDriftRatio}},
       // Question ii's lesson: without damping the arm swings freely in the null space (its
       // gravity there is not compensated) and the Coriolis forces of that swing move the tip.
       {"PART1 without the joint damping A (-kvj dq)",
@@ -113,7 +106,7 @@ std::vector<Mistake> mistakes_1b() {
            return law(part == Part::kTipPd ? Part::kTipPdWithoutJointDamping : part, s, g);
          };
        },
-       {law1, sim1}},
+       {id::kLawPart1, id::kSimPart1}},
       // Without p the tip sags under gravity by |p| / (kpx Lambda_v), centimetres, in every part:
       // PART1 and PART3 miss their bounds and PART3 drifts as much as PART2.
       {"p, the gravity at the tip, left out of the task force",
@@ -123,7 +116,8 @@ std::vector<Mistake> mistakes_1b() {
            return Vector6d(law(part, s, g) - s.Jv.transpose() * s.p);
          };
        },
-       {law1, law1n, law2, law3, sim1, sim3, ratio}},
+       {id::kLawPart1, id::kLawWithoutDamping, id::kLawPart2, id::kLawPart3, id::kSimPart1, id::kSimPart3,
+        id::kSimDriftRatio}},
   };
 }
 

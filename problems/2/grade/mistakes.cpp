@@ -75,14 +75,8 @@ Vector7d without_a_dot_squared(const Fn<decltype(hw2::p2::desired_acceleration)>
 
 std::vector<Mistake> mistakes_2() {
   namespace id = test_id::p2;
-  const std::string a = id::kAcceleration;
-  const std::string law = id::kLaw;
-  const std::string position = id::kSimPosition;
-  const std::string orientation = id::kSimOrientation;
-  const std::string continuous = id::kSimContinuous;
-  const std::string limits = id::kSimJointLimits;
-  const std::string drift = id::kSimSelfMotion;
-  const std::vector<std::string> law_and_run = {law, position, orientation, continuous, limits, drift};
+  const std::vector<std::string> law_and_run = {id::kLaw, id::kSimPosition, id::kSimOrientation,
+                                                id::kSimContinuous, id::kSimJointLimits, id::kSimSelfMotion};
   return {
       // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation
       // (closed forms in problems/2/grade/graded.cpp); the arm still moves as it should otherwise.
@@ -98,7 +92,7 @@ std::vector<Mistake> mistakes_2() {
       {"E^+ evaluated at lambda_d instead of the current lambda",
        "every E^+ in the law is evaluated at the current s.lambda",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::E_pinv_at_lambda_d>; },
-       {law}},
+       {id::kLaw}},
       // Positive orientation feedback: link7 turns away from lambda_d until the error reaches
       // 180 degrees (lambda flips), the arm swings far off its path and past joint limits.
       {"delta_phi with the wrong sign, E^+ (lambda_d - lambda)",
@@ -131,7 +125,7 @@ std::vector<Mistake> mistakes_2() {
            return without_a_dot_squared(right, t);
          };
        },
-       {a}},
+       {id::kAcceleration}},
   };
 }
 

@@ -54,13 +54,6 @@ Vector7d with(const State& s, const Goal& goal) {
 
 std::vector<Mistake> mistakes_3() {
   namespace id = test_id::p3;
-  const std::string selection = id::kSelection;
-  const std::string law = id::kLaw;
-  const std::string force = id::kSimForce;
-  const std::string flat = id::kSimFlat;
-  const std::string yz = id::kSimPosition;
-  const std::string rx = id::kSimRotation;
-  const std::string kept = id::kSimContact;
   return {
       // x becomes motion-controlled to x_d = 0, where the face rests on the plane (p3's start):
       // it touches but never pushes, so every contact test fails, the flat one included ("the
@@ -74,14 +67,15 @@ std::vector<Mistake> mistakes_3() {
          api.p3.force_selection = &oracle::omega;
          api.p3.control = &with<&Mistakes::swapped>;
        },
-       {selection, law, force, flat, yz, rx, kept}},
+       {id::kSelection, id::kLaw, id::kSimForce, id::kSimFlat, id::kSimPosition, id::kSimRotation,
+        id::kSimContact}},
       // The scenario's F_d = [10, 0, 0, 0, 0, 0] lies in the force directions already, so
       // without Omega-bar the torque is the same in simulation, at every tick (the pin passes):
       // only the law test, whose F_d has components in the motion directions too, sees it.
       {"the desired force F_d added without Omega-bar",
        "the force goes through Omega-bar: + Omega-bar F_d, so that it acts only in the force directions",
        [](Hw2Api& api) { api.p3.control = &with<&Mistakes::no_omega_bar>; },
-       {law}},
+       {id::kLaw}},
       // Lambda0 F_d = 10 Lambda0(:, 0): at the start Lambda0(0, 0) = 3.4 kg, so the tool pushes
       // 33 N on average instead of 10 N; Lambda0(1, 0) = 1.1 kg adds an 11 N push along y that
       // the motion loop must fight, 33 mm RMS of y, z error. The face stays flat, in contact, and
@@ -89,7 +83,7 @@ std::vector<Mistake> mistakes_3() {
       {"the desired force multiplied by Lambda0 (treated as an acceleration)",
        "F_d is a force: Omega-bar F_d is added after Lambda0, not multiplied by it",
        [](Hw2Api& api) { api.p3.control = &with<&Mistakes::force_times_lambda>; },
-       {law, force, flat, yz, rx, kept}},
+       {id::kLaw, id::kSimForce, id::kSimFlat, id::kSimPosition, id::kSimRotation, id::kSimContact}},
   };
 }
 

@@ -66,30 +66,24 @@ Eigen::Vector3d z0_potential_stretches(const Law& law, Target target, const Stat
 
 std::vector<Mistake> mistakes_4() {
   namespace id = test_id::p4;
-  const std::string dirs = id::kDirections;
-  const std::string types0 = id::kStraightUpTypes;
-  const std::string types = id::kTypesElsewhere;
-  const std::string law = id::kLaw;
-  const std::string simz = id::kSimAlongZ0;
-  const std::string simy = id::kSimAlongY0;
   return {
       {"singular directions from the right singular vectors V",
        "a singular direction lives in the tip's space: the columns of U (Jv = U S V^T) whose sigma vanishes",
        [](Hw2Api& api) { api.p4.singular_directions = &singular_directions_from_v; },
-       {dirs}},
+       {id::kDirections}},
       // Every overhead lock then looks Type I: joint 1 combined with joint 2 does move the tip
       // along the plane's normal at second order, but that motion is not a self-motion.
       {"Type I/II tested over all joint motions, not the self-motions",
        "the type tests the self-motions only: C_u = Nb^T H_u Nb with Nb a basis of the null space of Jv",
        [](Hw2Api& api) { api.p4.singularity_type = &type_over_all_joint_motions; },
-       {types0, types}},
+       {id::kStraightUpTypes, id::kTypesElsewhere}},
       // Right at theta = (0, 90 deg, 0), wrong at the same arm turned about Z0 (its overhead lock is
       // no longer Y0) and at every other singular configuration.
       {"the types looked up for theta = (0, 90 deg, 0) alone (Z0 Type I, Y0 Type II) and kNone elsewhere",
        "the type of u at the configuration given: kNone unless u^T Jv = 0, then Type I if some self-motion moves "
        "the tip along u at second order (C_u = Nb^T H_u Nb != 0), else Type II",
        [](Hw2Api& api) { api.p4.singularity_type = &types_looked_up; },
-       {types0, types}},
+       {id::kStraightUpTypes, id::kTypesElsewhere}},
       // Turning joint 1 does not unlock a stretched elbow, and retracting the arm does not turn
       // its plane: neither target is reached.
       {"the Z0 and Y0 potentials swapped",
@@ -99,7 +93,7 @@ std::vector<Mistake> mistakes_4() {
            return law(target == Target::kAlongZ0 ? Target::kAlongY0 : Target::kAlongZ0, s, g);
          };
        },
-       {law, simz, simy}},
+       {id::kLaw, id::kSimAlongZ0, id::kSimAlongY0}},
       {"the Z0 potential's minimum at the stretched arm",
        "the Z0 potential's minimum is the retracted arm, q_d[2] = kRetractedElbow, which leads out of the lock",
        [](Hw2Api& api) {
@@ -107,7 +101,7 @@ std::vector<Mistake> mistakes_4() {
            return z0_potential_stretches(law, target, s, g);
          };
        },
-       {law, simz}},
+       {id::kLaw, id::kSimAlongZ0}},
   };
 }
 
