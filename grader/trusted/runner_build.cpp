@@ -140,6 +140,28 @@ std::string own_identity() {
          std::to_string(self.st_mtim.tv_nsec) + " " + std::to_string(self.st_ino) + " " + std::to_string(self.st_dev);
 }
 
+// What the compiler may read of this build's headers, part of the cache key: every file under
+// the `headers=` folders (the library's include/, the contracts' copies), its path, size and
+// time, in name order. A header added, edited or removed there by hand, with no rebuild of the
+// grader, then builds anew instead of being served a runner compiled without it.
+std::string headers_state(const std::vector<std::string>& roots) {
+  std::vector<std::string> entries;
+  for (const std::string& root : roots) {
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
+      struct stat st {};
+      if (lstat(it->path().c_str(), &st) != 0 || S_ISDIR(st.st_mode)) continue;
+      entries.push_back(it->path().string() + " " + std::to_string(st.st_mode) + " " + std::to_string(st.st_size) +
+                        " " + std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec));
+    }
+    if (ec) entries.push_back(root + " unreadable: " + ec.message());
+  }
+  std::sort(entries.begin(), entries.end());
+  std::string all;
+  for (const std::string& entry : entries) all += std::to_string(entry.size()) + " " + entry + "\n";
+  return all;
+}
+
 // Saves and restores what a cached build reported besides its binary.
 void save_report(const std::string& path, const BuiltRunner& built) {
   const std::string tmp = temporary(path);
@@ -332,7 +354,12 @@ Toolchain load_toolchain(const std::string& path) {
   }
   if (t.compile.empty() || t.link.empty() || t.nm.empty())
     throw std::runtime_error(path + ": compile=, link= and nm= are required");
-  t.fingerprint = Sha256().add(std::to_string(all.size()) + "\n" + all).add(own_identity()).hex();
+  const std::string identity = own_identity();
+  t.fingerprint = Sha256()
+                      .add(std::to_string(all.size()) + "\n" + all)
+                      .add(std::to_string(identity.size()) + "\n" + identity)
+                      .add(headers_state(t.headers))
+                      .hex();
   return t;
 }
 

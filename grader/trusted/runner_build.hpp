@@ -33,7 +33,9 @@ struct Toolchain {
   std::string nm_plugin;
   /// nm and its options before the grader's: {nm} or {nm, --plugin, nm_plugin}.
   std::vector<std::string> nm_command() const;
-  std::string fingerprint;                 ///< changes when any of the above changes, or the grader is rebuilt
+  /// Changes when any of the above changes, the grader is rebuilt, or a file under `headers`
+  /// is added, removed or touched.
+  std::string fingerprint;
 };
 
 /// Reads the toolchain file. Throws std::runtime_error naming the file and line on bad input.

@@ -139,3 +139,27 @@ TEST_CASE("a toolchain file without nm-plugin runs nm as it is") {
         std::vector<std::string>{"/usr/bin/nm", "--plugin", "/usr/lib/x/liblto_plugin.so"});
   fs::remove(path);
 }
+
+TEST_CASE("a header added, edited or removed under the toolchain's headers changes its fingerprint") {
+  // The runner cache's key holds the fingerprint (runner_build.cpp, cache_key): a runner built
+  // before a header was dropped beside the contracts by hand must not be served after it.
+  const fs::path work = fs::temp_directory_path() / ("opspace-test-headers-" + std::to_string(::getpid()));
+  fs::create_directories(work / "contracts/problems/1a");
+  std::ofstream(work / "contracts/problems/1a/contract.hpp") << "#pragma once\n";
+  const std::string path = (work / "toolchain.txt").string();
+  std::ofstream(path) << "compile=c++\nlink=c++\nnm=/usr/bin/nm\nheaders=" << (work / "contracts").string() << "\n";
+  const std::string before = grading::load_toolchain(path).fingerprint;
+  CHECK(grading::load_toolchain(path).fingerprint == before);  // nothing changed: the same key
+
+  std::ofstream(work / "contracts/problems/1a/tests.hpp") << "#pragma once\n";
+  const std::string added = grading::load_toolchain(path).fingerprint;
+  CHECK_MESSAGE(added != before, "a file added beside the contract must change the key");
+
+  std::ofstream(work / "contracts/problems/1a/tests.hpp", std::ios::app) << "// edited\n";
+  const std::string edited = grading::load_toolchain(path).fingerprint;
+  CHECK_MESSAGE(edited != added, "a header whose size changed must change the key");
+
+  fs::remove(work / "contracts/problems/1a/tests.hpp");
+  CHECK_MESSAGE(grading::load_toolchain(path).fingerprint == before, "the folder as it was gives the key it gave");
+  fs::remove_all(work);
+}
