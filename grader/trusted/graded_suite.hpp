@@ -7,6 +7,7 @@
 
 #include "grading.hpp"
 #include "protocol/problems.hpp"
+#include "runs_ahead.hpp"
 
 namespace opspace::grading {
 
@@ -15,6 +16,9 @@ struct Problem {
   std::string key;                ///< its key in problems.txt, "1a" (hw2-grade --problem KEY)
   std::string title;              ///< printed over its tests
   std::vector<GradedTest> tests;  ///< in the order they are run and reported
+  /// Its simulated runs in the order its tests first ask for them, which a second runner may
+  /// make ahead (runs_ahead.hpp); empty: each is made by the first test that asks.
+  std::vector<ListedRun> runs = {};
 };
 
 /// problem_1a() ...: each problem of the list (protocol/problems.hpp) with its graded tests

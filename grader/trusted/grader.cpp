@@ -25,6 +25,7 @@
 #include "runner_build.hpp"
 #include "runner_cache.hpp"
 #include "runner_process.hpp"
+#include "runs_ahead.hpp"
 #include "sandbox.hpp"
 #include "student_text.hpp"
 
@@ -184,8 +185,8 @@ void apply_oracles(ProblemResult& result, const BuiltRunner& built) {
 }
 
 ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, const std::string& run_dir,
-                            const GraderOptions& options, const Account& account, Protections& protections,
-                            bool& started) {
+                            const GraderOptions& options, const Account& account, bool second_runner,
+                            Protections& protections, bool& started) {
   if (!built.ok) return not_built(problem, built);
   // A folder of its own, holding its runner and nothing else: no other problem's runner (built
   // from the same student's other files, under other rules) is in its view.
@@ -201,12 +202,31 @@ ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, co
   const std::string binary = folder + "/runner-" + problem.key;
   fs::copy_file(built.binary, binary, fs::copy_options::overwrite_existing);
   fs::permissions(binary, readable);
-  RunnerProcess runner(RunnerConfig{binary, folder, account, options.isolate, kRunnerEnv, built.runtime});
+  const RunnerConfig config{binary, folder, account, options.isolate, kRunnerEnv, built.runtime};
+  RunnerProcess runner(config);
   const Hw2Api api = remote_api(problem.key, runner);
   ProblemResult out;
   out.problem = &problem;
   const std::vector<Mistake> catalogue = mistakes(problem.key);
-  out.results = run_tests(problem.tests, api, &runner, timeout_of(options, problem.key), &catalogue);
+  const double timeout = timeout_of(options, problem.key);
+  {
+    // A second runner, started as the first (the same binary, folder, account and sandbox),
+    // answering with the tests' identity: it makes its share of the problem's listed runs while
+    // the tests run, and each is given to the first test that asks for it (runs_ahead.hpp).
+    RunnerProcess second(config);
+    Hw2Api second_api = remote_api(problem.key, second);
+    second_api.identity = api.identity;
+    std::unique_ptr<RunsAhead> ahead;
+    const std::vector<ListedRun> share = second_runner_share(problem.runs);
+    if (second_runner && !share.empty()) {
+      std::cerr << "a second runner makes " + std::to_string(share.size()) + " of problem " + problem.key + "'s " +
+                       std::to_string(problem.runs.size()) + " simulated runs\n";  // one write
+      ahead = std::make_unique<RunsAhead>(share, second_api, second, timeout);
+    }
+    out.results = run_tests(problem.tests, api, &runner, timeout, &catalogue);
+    ahead.reset();
+    second.stop();
+  }
   runner.stop();
   // Whose fault each failure was: the runner knows (run_tests keeps only the failure's text).
   const std::vector<Fault>& faults = runner.test_faults();
@@ -238,11 +258,13 @@ std::vector<Graded> grade_all(const std::vector<const Problem*>& chosen, const s
                               const std::string& run_dir, const GraderOptions& options, const Account& account,
                               unsigned jobs) {
   std::vector<Graded> graded(chosen.size());
+  // A core to spare for each problem (one problem graded, --jobs 2): a second runner each.
+  const bool second_runner = options.second_runner && jobs >= 2 * chosen.size();
   at_once(chosen.size(), jobs, [&](std::size_t i) {
     std::cerr << "grading problem " + chosen[i]->key + "...\n";  // one write: threads do not interleave it
     Graded& g = graded[i];
     try {
-      g.result = grade_problem(*chosen[i], built[i], run_dir, options, account, g.protections, g.started);
+      g.result = grade_problem(*chosen[i], built[i], run_dir, options, account, second_runner, g.protections, g.started);
     } catch (const std::exception& e) {
       BuiltRunner broken = built[i];
       broken.ok = false;

@@ -37,6 +37,9 @@ struct GraderOptions {
   unsigned long long cache_mib = kDefaultCacheMib;  ///< the runners' cache bound (--cache-limit)
   std::string cache_dir;            ///< the runners' cache (--cache; empty: the build's)
   unsigned jobs = 0;                ///< problems graded at once (--jobs); 0: jobs_by_default()
+  /// A problem graded with a core to spare (jobs at least twice the problems) makes some of its
+  /// listed runs on a second runner (runs_ahead.hpp); false: one runner each (--one-runner).
+  bool second_runner = true;
 };
 
 /// Reads hw2-grade's command line into `options` (whose timeout is the default on entry).

@@ -62,7 +62,7 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
       << "          [--gradescope FILE] [--junit FILE] [--html FILE] [--hidden TEXT]... [--sandbox-user NAME]\n"
       << "          [--unprotected] [--hidden-visibility WHEN] [--gradescope-format FORMAT] [--no-isolation]\n"
-      << "          [--memory MIB] [--cache DIR] [--cache-limit MIB] [--jobs N]\n"
+      << "          [--memory MIB] [--cache DIR] [--cache-limit MIB] [--jobs N] [--one-runner]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
   for (const Problem& p : graded_suite()) {
@@ -100,6 +100,8 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "                 (exit 0 if it does, 3 if not)\n"
       << "  --jobs         grade N problems at once, each with its own runner (default: one per\n"
       << "                 core, or one as root, where the runners share one account's process limit)\n"
+      << "  --one-runner   one runner per problem: no second runner making a problem's simulated\n"
+      << "                 runs beside its tests when a core is spare (the same report either way)\n"
       << "  --no-isolation run the student's code without the sandbox (debugging only)\n"
       << "Exit code 0 whenever grading ran, whatever the score; 3 when it refused to run code\n"
       << "where the sandbox cannot be built (see --unprotected).\n";
@@ -190,6 +192,8 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
       options.check_sandbox = true;
     } else if (arg == "--unprotected") {
       options.allow_unprotected = true;
+    } else if (arg == "--one-runner") {
+      options.second_runner = false;
     } else if (arg == "--no-isolation") {
       options.isolate = false;
     } else {

@@ -66,6 +66,16 @@ void RunnerProcess::begin_test(std::chrono::steady_clock::time_point deadline, d
   failure_.clear();
   fault_ = Fault::none;
   printed_ = Printed{};
+  calls_in_test_ = 0;
+}
+
+void RunnerProcess::take_run(const Printed& printed, const std::string& failure, Fault fault) {
+  printed_.text.append(printed.text, 0, kMaxPrinted - std::min(kMaxPrinted, printed_.text.size()));
+  printed_.total += printed.total;
+  if (!failure.empty() && failure_.empty()) {
+    failure_ = failure;
+    fault_ = fault;
+  }
 }
 
 Printed RunnerProcess::end_test() {
@@ -240,6 +250,7 @@ void RunnerProcess::read_answer(void* out, std::size_t size) {
 
 std::vector<unsigned char> RunnerProcess::call(protocol::Function function, const std::vector<unsigned char>& arguments,
                                                std::size_t value_size) {
+  ++calls_in_test_;
   if (!failure_.empty()) throw RunnerFailure(failure_);
   if (!running_) start();
   const protocol::Header request{protocol::kRequestMagic, ++sequence_, static_cast<std::uint32_t>(function),

@@ -74,6 +74,12 @@ class RunnerProcess {
   /// Who caused each test's failure, one per end_test() in order (Fault::none: it did not fail).
   /// Kept here, where it is known, since a test's result keeps the failure's text alone.
   const std::vector<Fault>& test_faults() const { return test_faults_; }
+  /// How many requests the current test has sent (begin_test counts from 0).
+  long calls_in_test() const { return calls_in_test_; }
+  /// What a run made on another runner of the same binary printed, and the failure that ended
+  /// it (if any), taken as if both had happened here in the current test (runs_ahead.hpp): the
+  /// prints are appended, and the failure, unless one came first, ends this runner at end_test().
+  void take_run(const Printed& printed, const std::string& failure, Fault fault);
 
   /// Sends `arguments` to `function` and returns the value's bytes, exactly `value_size` of
   /// them. Throws RunnerFailure or StudentException.
@@ -110,6 +116,7 @@ class RunnerProcess {
   Fault fault_ = Fault::none;
   std::vector<Fault> test_faults_;
   Printed printed_;
+  long calls_in_test_ = 0;
   // What was read from the answer pipe and not yet taken (read_answer): one read takes an
   // answer's header and payload together. Emptied when the runner stops.
   std::vector<unsigned char> inbox_;

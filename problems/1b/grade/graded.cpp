@@ -110,6 +110,12 @@ const Run& run(const Hw2Api& api, Part part) {
   });
 }
 
+// The run of `part` as Problem::runs lists it: its key and a call that asks for it.
+ListedRun listed_run(Part part) {
+  return {[part](std::uint64_t identity) { return run_key<p1b::Result>(identity, static_cast<int>(part)); },
+          [part](const Hw2Api& api) { run(api, part); }};
+}
+
 // The reference's run of `part`: the problem set's law (the oracles) in the same scenario.
 const p1b::Result& reference_run(Part part) {
   static const Hw2Api oracles = oracle::reference_api();
@@ -328,7 +334,11 @@ Problem problem_1b() {
                "PART2 must use the pseudo-inverse projector, PART3 the dynamically consistent one: "
                "the difference is the point of the problem.",
                part2_drifts_more_than_part3, "hw2-p1 compare"},
-          }};
+          },
+          // The runs in the order the tests first ask for them: PART1's test, PART3's, then the
+          // drift test's PART2 (PART3 is made by then).
+          {listed_run(Part::kTipPd), listed_run(Part::kDynamicallyConsistentNullspace),
+           listed_run(Part::kPseudoInverseNullspace)}};
 }
 
 namespace oracle {
