@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <random>
 #include <thread>
 
@@ -209,24 +210,23 @@ ProblemResult grade_problem(const Problem& problem, const BuiltRunner& built, co
   out.problem = &problem;
   const std::vector<Mistake> catalogue = mistakes(problem.key);
   const double timeout = timeout_of(options, problem.key);
-  {
-    // A second runner, started as the first (the same binary, folder, account and sandbox),
-    // answering with the tests' identity: it makes its share of the problem's listed runs while
-    // the tests run, and each is given to the first test that asks for it (runs_ahead.hpp).
-    RunnerProcess second(config);
-    Hw2Api second_api = remote_api(problem.key, second);
+  // A second runner, started as the first (the same binary, folder, account and sandbox),
+  // answering with the tests' identity: it makes its share of the problem's listed runs while
+  // the tests run, and each is given to the first test that asks for it (runs_ahead.hpp).
+  const std::vector<ListedRun> share = second_runner ? second_runner_share(problem.runs) : std::vector<ListedRun>{};
+  std::optional<RunnerProcess> second;
+  std::unique_ptr<RunsAhead> ahead;
+  if (!share.empty()) {
+    std::cerr << "a second runner makes " + std::to_string(share.size()) + " of problem " + problem.key + "'s " +
+                     std::to_string(problem.runs.size()) + " simulated runs\n";  // one write
+    second.emplace(config);
+    Hw2Api second_api = remote_api(problem.key, *second);
     second_api.identity = api.identity;
-    std::unique_ptr<RunsAhead> ahead;
-    const std::vector<ListedRun> share = second_runner_share(problem.runs);
-    if (second_runner && !share.empty()) {
-      std::cerr << "a second runner makes " + std::to_string(share.size()) + " of problem " + problem.key + "'s " +
-                       std::to_string(problem.runs.size()) + " simulated runs\n";  // one write
-      ahead = std::make_unique<RunsAhead>(share, second_api, second, timeout);
-    }
-    out.results = run_tests(problem.tests, api, &runner, timeout, &catalogue);
-    ahead.reset();
-    second.stop();
+    ahead = std::make_unique<RunsAhead>(share, second_api, *second, timeout);
   }
+  out.results = run_tests(problem.tests, api, &runner, timeout, &catalogue);
+  ahead.reset();  // its thread joined before its runner stops
+  if (second) second->stop();
   runner.stop();
   // Whose fault each failure was: the runner knows (run_tests keeps only the failure's text).
   const std::vector<Fault>& faults = runner.test_faults();
