@@ -106,7 +106,7 @@ say "removing the reference, the mutants, the tamper cases and the graded tests'
 rm -rf "$REPO/solutions" "$REPO/tests/mutants" "$REPO/tests/tamper" "$REPO/tests/deploy" \
        "$BUILD/solutions" "$BUILD/tests/mutants" "$BUILD/tests/tamper" "$BUILD/grading-cache" \
        "$BUILD/grader/suite/CMakeFiles/opspace_graded.dir" "$BUILD/Testing"
-rm -rf "$BUILD"/problems/*/CMakeFiles/opspace_graded_*.dir
+rm -rf "$BUILD"/problems/CMakeFiles/opspace_graded_problems.dir
 # Each problem's secret side, by place (problems/CMakeLists.txt): its whole grade/ folder.
 rm -rf "$REPO"/problems/*/grade
 rm -f "$REPO"/grader/suite/*.cpp

@@ -4,13 +4,16 @@
 
 namespace opspace::grading {
 
+namespace p1a_mistakes {  // named: every problem's graded code compiles in one unit
 namespace {
 
 using hw2::p1a::DisplacementSplit;
 
 }  // namespace
+}  // namespace p1a_mistakes
 
 std::vector<Mistake> mistakes_1a() {
+  using namespace p1a_mistakes;
   namespace id = test_id::p1a;
   return {
       {"A without the coupling term: m2 left off the diagonal",

@@ -7,6 +7,7 @@
 
 namespace opspace::grading {
 
+namespace p1b_mistakes {  // named: every problem's graded code compiles in one unit
 namespace {
 
 using hw2::p1b::Goal;
@@ -34,8 +35,10 @@ bool nullspace_part(Part part) {
 }
 
 }  // namespace
+}  // namespace p1b_mistakes
 
 std::vector<Mistake> mistakes_1b() {
+  using namespace p1b_mistakes;
   namespace id = test_id::p1b;
   return {
       // PART3 then drifts like PART2: the ratio test sees two equal drifts.

@@ -27,6 +27,7 @@
 
 namespace opspace::grading {
 
+namespace p2_graded {  // named: every problem's graded code compiles in one unit
 namespace {
 
 namespace p2 = opspace::scenarios::p2;
@@ -339,8 +340,10 @@ void self_motion_is_damped(const Hw2Api& api, Check& check) {
 }
 
 }  // namespace
+}  // namespace p2_graded
 
 Problem problem_2() {
+  using namespace p2_graded;
   namespace id = test_id::p2;
   return {"2",
           "KUKA iiwa: position and Euler-parameter trajectory tracking (simulated)",
@@ -390,7 +393,9 @@ Problem problem_2() {
 }
 
 namespace oracle {
-Vector7d law_2(const hw2::p2::State& s, const hw2::p2::Goal& goal) { return expected_torque(s, goal); }
+hw2::p2::Vector7d law_2(const hw2::p2::State& s, const hw2::p2::Goal& goal) {
+  return p2_graded::expected_torque(s, goal);
+}
 }  // namespace oracle
 
 }  // namespace opspace::grading

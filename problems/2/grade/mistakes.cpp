@@ -15,6 +15,7 @@
 
 namespace opspace::grading {
 
+namespace p2_mistakes {  // named: every problem's graded code compiles in one unit
 namespace {
 
 using hw2::p2::Goal;
@@ -72,8 +73,10 @@ Vector7d without_a_dot_squared(const Fn<decltype(hw2::p2::desired_acceleration)>
 }
 
 }  // namespace
+}  // namespace p2_mistakes
 
 std::vector<Mistake> mistakes_2() {
+  using namespace p2_mistakes;
   namespace id = test_id::p2;
   const std::vector<std::string> law_and_run = {id::kLaw, id::kSimPosition, id::kSimOrientation,
                                                 id::kSimContinuous, id::kSimJointLimits, id::kSimSelfMotion};

@@ -11,6 +11,7 @@
 
 namespace opspace::grading {
 
+namespace p4_mistakes {  // named: every problem's graded code compiles in one unit
 namespace {
 
 using hw2::p4::Directions;
@@ -63,8 +64,10 @@ Eigen::Vector3d z0_potential_stretches(const Law& law, Target target, const Stat
 }
 
 }  // namespace
+}  // namespace p4_mistakes
 
 std::vector<Mistake> mistakes_4() {
+  using namespace p4_mistakes;
   namespace id = test_id::p4;
   return {
       {"singular directions from the right singular vectors V",
