@@ -36,7 +36,7 @@ struct State {
   unsigned long long memory_budget = 0;  // enforced by a group
   unsigned long long requested = 0;      // asked for (address_space_within_budget)
 };
-State g;
+State groups;
 
 bool write_text(const std::string& path, const std::string& text) {
   std::ofstream out(path);
@@ -51,11 +51,11 @@ bool exists(const std::string& path) {
 }
 
 void leave() {
-  if (!g.cpu_own.empty()) {
-    write_text(g.cpu_parent + "/cgroup.procs", std::to_string(getpid()));
-    rmdir(g.cpu_own.c_str());
+  if (!groups.cpu_own.empty()) {
+    write_text(groups.cpu_parent + "/cgroup.procs", std::to_string(getpid()));
+    rmdir(groups.cpu_own.c_str());
   }
-  for (const std::string& group : g.programs) rmdir(group.c_str());
+  for (const std::string& group : groups.programs) rmdir(group.c_str());
 }
 
 // This process's group under `controller` ("cpu" for v1, "" for v2's single hierarchy), from
@@ -112,14 +112,14 @@ bool join_cpu(const std::string& parent) {
     rmdir(own.c_str());
     return false;
   }
-  g.cpu_parent = parent;
-  g.cpu_own = own;
+  groups.cpu_parent = parent;
+  groups.cpu_own = own;
   return true;
 }
 
 std::string mib(unsigned long long bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
-// A programs' group with `limit_file` set to `value`; kept in g.programs. Empty if none.
+// A programs' group with `limit_file` set to `value`; kept in groups.programs. Empty if none.
 std::string limited_group(const std::string& parent, const char* suffix, const std::string& limit_file,
                           unsigned long long value) {
   if (parent.empty() || value == 0) return "";
@@ -129,22 +129,22 @@ std::string limited_group(const std::string& parent, const char* suffix, const s
     rmdir(own.c_str());
     return "";
   }
-  g.programs.push_back(own);
+  groups.programs.push_back(own);
   return own;
 }
 
 GradingGroups join_v1(const GradingBudget& budget) {
   GradingGroups where;
   const std::string cpu = v1_parent({"/sys/fs/cgroup/cpu", "/sys/fs/cgroup/cpu,cpuacct"}, "cpu", "cpu.shares");
-  if (!cpu.empty() && join_cpu(cpu)) where.cpu = "cgroup v1 cpu:" + g.cpu_own.substr(g.cpu_own.rfind('/'));
+  if (!cpu.empty() && join_cpu(cpu)) where.cpu = "cgroup v1 cpu:" + groups.cpu_own.substr(groups.cpu_own.rfind('/'));
   const std::string memory = limited_group(v1_parent({"/sys/fs/cgroup/memory"}, "memory", "memory.limit_in_bytes"), "",
                                            "memory.limit_in_bytes", budget.memory_bytes);
   if (!memory.empty()) {
     // With swap, the same bound on memory and swap together (a file only where swap is counted).
     if (exists(memory + "/memory.memsw.limit_in_bytes"))
       write_text(memory + "/memory.memsw.limit_in_bytes", std::to_string(budget.memory_bytes));
-    g.kills_file = memory + "/memory.oom_control";
-    g.memory_budget = budget.memory_bytes;
+    groups.kills_file = memory + "/memory.oom_control";
+    groups.memory_budget = budget.memory_bytes;
     where.memory = "cgroup v1 memory:" + memory.substr(memory.rfind('/')) + ", " + mib(budget.memory_bytes);
   }
   const std::string pids =
@@ -161,11 +161,11 @@ GradingGroups join_v2(const GradingBudget& budget) {
   if (exists(root + "/cgroup.subtree_control") && join_cpu(root)) where.cpu = "cgroup v2:/" + own_name();
   const std::string programs = make_group(root, own_name("-programs"));
   if (programs.empty()) return where;
-  g.programs.push_back(programs);
+  groups.programs.push_back(programs);
   if (budget.memory_bytes > 0 && write_text(programs + "/memory.max", std::to_string(budget.memory_bytes))) {
     write_text(programs + "/memory.swap.max", "0");
-    g.kills_file = programs + "/memory.events";
-    g.memory_budget = budget.memory_bytes;
+    groups.kills_file = programs + "/memory.events";
+    groups.memory_budget = budget.memory_bytes;
     where.memory = "cgroup v2:/" + own_name("-programs") + " memory.max, " + mib(budget.memory_bytes);
   }
   if (budget.processes > 0 && write_text(programs + "/pids.max", std::to_string(budget.processes)))
@@ -178,7 +178,7 @@ GradingGroups join_v2(const GradingBudget& budget) {
 GradingGroups join_grading_groups(const GradingBudget& budget) {
   static bool joined = false;
   if (joined) return {};
-  g.requested = budget.memory_bytes;
+  groups.requested = budget.memory_bytes;
   if (geteuid() != 0) return {};
   joined = true;
   std::atexit(leave);
@@ -188,15 +188,15 @@ GradingGroups join_grading_groups(const GradingBudget& budget) {
 }
 
 void admit_to_grading_groups(pid_t pid) {
-  for (const std::string& group : g.programs)
+  for (const std::string& group : groups.programs)
     // A program that has already ended (ESRCH) needs no group.
     if (!write_text(group + "/cgroup.procs", std::to_string(pid)) && kill(pid, 0) == 0)
       throw std::runtime_error("the grader could not put a program in its grading's group " + group);
 }
 
 unsigned long long grading_memory_kills() {
-  if (g.kills_file.empty()) return 0;
-  std::ifstream in(g.kills_file);
+  if (groups.kills_file.empty()) return 0;
+  std::ifstream in(groups.kills_file);
   for (std::string name; in >> name;) {
     unsigned long long count = 0;
     if (!(in >> count)) break;
@@ -205,12 +205,12 @@ unsigned long long grading_memory_kills() {
   return 0;
 }
 
-unsigned long long grading_memory_group_budget() { return g.memory_budget; }
+unsigned long long grading_memory_group_budget() { return groups.memory_budget; }
 
 unsigned long long address_space_within_budget(unsigned long long own) {
   // 0 stays 0: a program without an address-space limit (a sanitized runner reserves terabytes).
-  if (g.memory_budget > 0 || g.requested == 0 || own == 0) return own;
-  return std::min(own, g.requested);
+  if (groups.memory_budget > 0 || groups.requested == 0 || own == 0) return own;
+  return std::min(own, groups.requested);
 }
 
 unsigned long long machine_memory() {

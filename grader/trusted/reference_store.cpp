@@ -39,7 +39,7 @@ bool& making() {  // set_reference_store() was called: the figures of failed tes
   return on;
 }
 
-std::string file_of(const std::string& key) { return store_folder() + "/" + Sha256().add(key).hex() + ".txt"; }
+std::string store_file(const std::string& key) { return store_folder() + "/" + Sha256().add(key).hex() + ".txt"; }
 
 // A stored series: one "t v" line per point, each number in full (%.17g reads back exactly).
 bool read_series(const std::string& path, Series& out) {
@@ -84,7 +84,7 @@ const Series* known(const std::string& key) {
   auto it = kept().find(key);
   if (it != kept().end()) return &it->second;
   Series s;
-  if (store_folder().empty() || !read_series(file_of(key), s)) return nullptr;
+  if (store_folder().empty() || !read_series(store_file(key), s)) return nullptr;
   return &kept().emplace(key, std::move(s)).first->second;
 }
 
@@ -105,7 +105,7 @@ const Series& reference_series(const std::string& key, const std::function<Serie
   Series run = make();  // unlocked: it may ask for another series (reference_statistic's do)
   const std::lock_guard<std::mutex> hold(kept_lock());
   const auto [it, added] = kept().emplace(key, std::move(run));
-  if (added && !store_folder().empty() && !it->second.t.empty()) write_series(file_of(key), it->second);
+  if (added && !store_folder().empty() && !it->second.t.empty()) write_series(store_file(key), it->second);
   return it->second;
 }
 
