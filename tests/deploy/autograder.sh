@@ -85,6 +85,11 @@ for gone in solutions tests/mutants tests/tamper build/release/apps/hw2-grade-so
 done
 leftover=$(cd "$root/source/opspace" && find problems -mindepth 2 -maxdepth 2 -name grade -print)
 [ -z "$leftover" ] || { echo "setup.sh left a problem's secret side in the image: $leftover"; exit 1; }
+# Nor their objects in the build (the graded code's and the suite's), which hold the graded tests'
+# strings, oracles and hints. (opspace_graded_visible is the handout's replay of public answers.)
+leftover=$(cd "$root/source/opspace/build/release" &&
+  find . -type d \( -name opspace_graded_problems.dir -o -name opspace_graded.dir \) -print)
+[ -z "$leftover" ] || { echo "setup.sh left the graded code's objects in the image: $leftover"; exit 1; }
 rm -rf "$work"/submission-* "$work/stubs"
 
 stubs="$work/stubs"
