@@ -13,7 +13,7 @@
 
 namespace opspace::grading {
 
-namespace p1a_graded {  // named: every problem's graded code compiles in one unit
+namespace p1a_graded {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 namespace pp = opspace::pp;

@@ -4,7 +4,7 @@
 
 namespace opspace::grading {
 
-namespace p1a_mistakes {  // named: every problem's graded code compiles in one unit
+namespace p1a_mistakes {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 using hw2::p1a::DisplacementSplit;

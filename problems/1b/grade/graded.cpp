@@ -23,7 +23,7 @@
 
 namespace opspace::grading {
 
-namespace p1b_graded {  // named: every problem's graded code compiles in one unit
+namespace p1b_graded {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 namespace p1b = opspace::scenarios::p1b;

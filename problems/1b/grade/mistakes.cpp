@@ -7,7 +7,7 @@
 
 namespace opspace::grading {
 
-namespace p1b_mistakes {  // named: every problem's graded code compiles in one unit
+namespace p1b_mistakes {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 using hw2::p1b::Goal;

@@ -27,7 +27,7 @@
 
 namespace opspace::grading {
 
-namespace p2_graded {  // named: every problem's graded code compiles in one unit
+namespace p2_graded {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 namespace p2 = opspace::scenarios::p2;

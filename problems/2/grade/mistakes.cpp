@@ -15,7 +15,7 @@
 
 namespace opspace::grading {
 
-namespace p2_mistakes {  // named: every problem's graded code compiles in one unit
+namespace p2_mistakes {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 using hw2::p2::Goal;

@@ -23,7 +23,7 @@
 
 namespace opspace::grading {
 
-namespace p3_graded {  // named: every problem's graded code compiles in one unit
+namespace p3_graded {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 namespace p3 = opspace::scenarios::p3;

@@ -13,7 +13,7 @@
 
 namespace opspace::grading {
 
-namespace p3_mistakes {  // named: every problem's graded code compiles in one unit
+namespace p3_mistakes {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 using hw2::p3::Goal;

@@ -24,7 +24,7 @@
 
 namespace opspace::grading {
 
-namespace p4_graded {  // named: every problem's graded code compiles in one unit
+namespace p4_graded {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 namespace p4 = opspace::scenarios::p4;

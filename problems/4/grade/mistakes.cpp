@@ -11,7 +11,7 @@
 
 namespace opspace::grading {
 
-namespace p4_mistakes {  // named: every problem's graded code compiles in one unit
+namespace p4_mistakes {  // named: problems share a unity unit (problems/CMakeLists.txt)
 namespace {
 
 using hw2::p4::Directions;
