@@ -14,7 +14,7 @@ cmake_minimum_required(VERSION 3.22)
 # Cases with ISOLATED=ON need the sandbox's private file view: skipped (SKIPPED:) without it.
 #   cmake -DGRADER=hw2-grade-sol -DSOLUTIONS=solutions -DCASE=cases/<case>.cpp [-DTARGET=p1b.cpp]
 #         -DWORK=dir -DREPO=root [-DTIMEOUT=seconds per test, 5] [-DPROBLEM=1b] [-DSCORES=...] [-DEXPECT=...] [-DFORBID=...] [-DFORBID_BYTES=e280a8,ff]
-#         [-DFAULT=...] [-DISOLATED=ON] [-DGRADER_ARGS=--no-isolation] -P run_case.cmake
+#         [-DFAULT=...] [-DISOLATED=ON] [-DJOBS=2] [-DGRADER_ARGS=--no-isolation] -P run_case.cmake
 # (GRADER_ARGS=--no-isolation turns the sandbox off: then the attacks succeed, which shows
 # that the cases can fail.)
 if(NOT TIMEOUT)
@@ -46,10 +46,16 @@ set(args --exercises "${WORK}/exercises" --gradescope "${RESULTS_JSON}" --timeou
 if(PROBLEM)
   list(APPEND args --problem ${PROBLEM})
 endif()
+if(JOBS)
+  list(APPEND args --jobs ${JOBS})
+endif()
 execute_process(COMMAND "${GRADER}" ${args} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc
                 TIMEOUT 900)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the grader exited with '${rc}' (expected 0: grading ran):\n${out}\n${err}")
+endif()
+if(JOBS AND PROBLEM STREQUAL "1b" AND NOT err MATCHES "a second runner makes")
+  message(FATAL_ERROR "no second runner made 1b's runs with --jobs ${JOBS}:\n${err}")
 endif()
 if(ISOLATED AND out MATCHES "Sandbox: [^\n]*(private view|separate user)")
   message("SKIPPED: this case needs the sandbox's private file view and separate user, not available here:\n${out}")
