@@ -5,15 +5,16 @@
 /// student's code returned is compared with the problem set's law, the oracle of the problem's
 /// law test, at the same State and Goal.
 ///
-/// The pin is a gate, not a second law test (docs/grader.md, "The law and the behaviour"). The
-/// law test is strict and costs its own points for any wrong term. A behaviour test withholds
-/// its points for the law only where the law is materially different for what it measures:
-/// - a different law: at some tick the torque differs from the law's by more than
-///   kDifferentLaw of the law's torque (a term left out, replaced or aimed elsewhere);
-/// - or a slip that moved what the test judges: the judged statistic of the run is more than
-///   kMovedShare of the bound away from the reference's (the law's run in the same scenario).
-/// A slip of the law's own terms (E^+ at lambda_d instead of lambda) whose run judges as the
-/// reference's earns the behaviour's points: the law test alone pays for it.
+/// One rule (docs/grader.md, "The law and the behaviour"): each point is paid once, by the test
+/// that examines that property. The law test pays for the law's terms. A behaviour test pays for
+/// its judged statistics: when the run applied the law at every tick, they are judged against
+/// their bounds; when it did not, they must also lie where the law puts them, within kMovedShare
+/// of each bound of the reference's (the law's run in the same scenario). So a term that moves
+/// nothing a test judges costs that test nothing, whatever its size in torque, and a different
+/// law that behaves otherwise loses the test on the statistic it moved, shown with both values.
+/// The pin never weighs the size of the difference: the scenarios put each known different law
+/// where its run shows it (problems/<key>/run/scenario.hpp). What differs is named part by part
+/// where the law acts: the task force per direction, the null-space torque per joint.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grading.hpp"
@@ -28,79 +30,149 @@
 
 namespace opspace::grading {
 
-/// A torque that differs from the law's by more than this share of the law's own torque
-/// (max |tau_i|, at least 1 N m) at some tick is a different law. Measured on the catalogue
-/// (problems/*/grade/mistakes.cpp, each guide's rubric), the largest share over each mistake's
-/// run: a term left out, replaced or aimed elsewhere differs by 2.9 % (problem 2's feed-forward
-/// left out, beside the iiwa's gravity torque) to 510 % (1b's PART3 projector without I -); a
-/// term of the law evaluated at a nearby point (E^+ at lambda_d, where the run keeps lambda within a
-/// milliradian of lambda_d) by 0.015 %. 0.5 % lies six times below the one and thirty times
-/// above the other.
-inline constexpr double kDifferentLaw = 5e-3;
-/// A slip moved the judged statistic when it lies further than this share of the bound from
-/// the reference's. Every bound leaves the reference a margin of at least a factor of two
-/// (the bounds' comments), so a move of a tenth of the bound cannot carry a run across it on
-/// its own: what is left is the run's own behaviour.
+/// A statistic moved when it lies further than this share of its bound from the reference's.
+/// Every bound leaves the reference a margin of at least a factor of two (the bounds'
+/// comments), so a move of a tenth of the bound cannot carry a run across it on its own: what
+/// is left is the run's own behaviour.
 inline constexpr double kMovedShare = 0.1;
 
-/// How far the torque of a run strayed from the law's: the tick of the largest difference.
+/// How far `j`'s statistic may lie from the reference's and not have moved: kMovedShare of its
+/// bound, or what the test says of a chaotic run (Judgement::moved_within).
+inline double moved_within(const Judgement& j) {
+  return std::isnan(j.moved_within) ? kMovedShare * std::abs(j.bound) : j.moved_within;
+}
+/// Why moved_within() is what it is, as the page says it.
+inline std::string moved_why(const Judgement& j) {
+  return std::isnan(j.moved_within) ? "a tenth of the bound" : j.moved_why;
+}
+/// Whether `j`'s statistic lies further than moved_within() from the reference's.
+inline bool moved(const Judgement& j) { return !(std::abs(j.yours - j.reference) <= moved_within(j)); }
+
+/// The parts of a task-space law where they act: tau = J^T (Jbar^T tau) + N^T tau for any tau
+/// (J Jbar = I, N = I - Jbar J), so Jbar^T tau is the task force it applies (one part per
+/// direction) and N^T tau its null-space torque (one part per joint). Stacked: [Jbar^T; N^T].
+inline Eigen::MatrixXd task_split(const Eigen::Ref<const Eigen::MatrixXd>& Jbar,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& N) {
+  Eigen::MatrixXd split(Jbar.cols() + N.cols(), Jbar.rows());
+  split << Jbar.transpose(), N.transpose();
+  return split;
+}
+
+/// A part of a law where it acts, as the page names it, and the unit of its values.
+struct LawPart {
+  std::string name;  ///< "F_x (force-controlled)", "the null-space torque at joint 2"
+  std::string unit;  ///< "N", "N m"
+};
+
+/// The parts of task_split(): the task directions given, then "the null-space torque at joint
+/// k" (N m) for each of `joints`.
+inline std::vector<LawPart> task_parts(std::vector<LawPart> directions, int joints) {
+  for (int k = 1; k <= joints; ++k) directions.push_back({"the null-space torque at joint " + std::to_string(k), "N m"});
+  return directions;
+}
+
+/// How far the torque of a run strayed from the law's, and where the law acts that it did.
 class LawPin {
  public:
-  /// `tol` as in Check::near: |computed - expected| <= tol * max(1, |expected|), entry-wise.
+  /// `tol` as in Check::near: |computed - expected| <= tol * max(1, |expected|), entry-wise:
+  /// round-off, not a judgement of size.
   explicit LawPin(double tol) : tol_(tol) {}
 
-  /// One tick at time t: the law's torque and the one the student's code returned.
-  void see(double t, const Eigen::Ref<const Eigen::VectorXd>& expected, const Eigen::Ref<const Eigen::VectorXd>& computed) {
+  /// Names the parts a split of see() returns (task_parts()).
+  void name_parts(std::vector<LawPart> names) { names_ = std::move(names); }
+
+  /// One tick at time t: the law's torque and the one the student's code returned, and
+  /// `split()`, the matrix whose rows give the law's parts of a torque (task_split()), asked
+  /// for only at a tick that differs.
+  template <class Split>
+  void see(double t, const Eigen::Ref<const Eigen::VectorXd>& expected, const Eigen::Ref<const Eigen::VectorXd>& computed,
+           Split split) {
     ++ticks_;
     const double scale = std::max(1.0, expected.cwiseAbs().maxCoeff());
-    double share = HUGE_VAL;  // a wrong size or a value that is not finite is as far as can be
-    if (computed.size() == expected.size() && computed.allFinite())
-      share = (computed - expected).cwiseAbs().maxCoeff() / scale;
-    if (share <= tol_) return;
+    const bool comparable = computed.size() == expected.size() && computed.allFinite();
+    if (comparable && (computed - expected).cwiseAbs().maxCoeff() <= tol_ * scale) return;
     differs_ = true;
-    if (share > largest_share_) largest_share_ = share, largest_t_ = t, largest_ = share * scale;
+    if (!comparable) return;
+    const Eigen::MatrixXd s = split();
+    const Eigen::VectorXd law = s * expected, difference = s * computed - law;
+    if (parts_.size() != static_cast<std::size_t>(law.size())) parts_.assign(static_cast<std::size_t>(law.size()), {});
+    for (Eigen::Index i = 0; i < law.size(); ++i) {
+      Part& p = parts_[static_cast<std::size_t>(i)];
+      p.size = std::max(p.size, std::abs(law(i)));
+      if (std::abs(difference(i)) > p.largest) p.largest = std::abs(difference(i)), p.t = t, p.law = law(i);
+    }
+  }
+  /// A tick without a split: the whole torque is one part.
+  void see(double t, const Eigen::Ref<const Eigen::VectorXd>& expected, const Eigen::Ref<const Eigen::VectorXd>& computed) {
+    see(t, expected, computed, [n = expected.size()] { return Eigen::MatrixXd::Identity(n, n).eval(); });
+  }
+
+  bool differs() const { return differs_; }  ///< some tick was not the law's torque
+  long ticks() const { return ticks_; }
+
+  /// Where the law differs most: up to three parts, each "F_x by up to 5.1 N (t = 2.300 s; the
+  /// law's 10.2 N there)", ranked by the difference against the part's own size over the run.
+  std::string where() const {
+    std::vector<std::pair<double, std::size_t>> ranked;
+    for (std::size_t i = 0; i < parts_.size(); ++i)
+      if (parts_[i].largest > 0) ranked.push_back({parts_[i].largest / std::max(parts_[i].size, kSizeFloor), i});
+    if (ranked.empty()) return "a torque that is not finite or of the wrong size";
+    std::sort(ranked.rbegin(), ranked.rend());
+    std::string out;
+    for (std::size_t k = 0; k < ranked.size() && k < 3; ++k) {
+      if (k > 0 && ranked[k].first < 0.1 * ranked[0].first) break;  // a tenth of the first: follows from it
+      const Part& p = parts_[ranked[k].second];
+      const LawPart named = ranked[k].second < names_.size()
+                                ? names_[ranked[k].second]
+                                : LawPart{"the torque at joint " + std::to_string(ranked[k].second + 1), "N m"};
+      out += (k == 0 ? "" : "; ") + named.name + " by up to " + number("%.3g", p.largest) + " " + named.unit + " (" +
+             number("t = %.3f s", p.t) + "; the law's " + number("%.3g", p.law) + " " + named.unit + " there)";
+    }
+    return out;
   }
 
   /// The gate of a behaviour test judging `judged` (yours and the reference's): passes when
-  /// every tick applied the law, or when the law differs only by a slip that did not move any
-  /// of `judged` by more than kMovedShare of its bound (then a line says so). `whose` names
-  /// the law ("your PART3 controller"), `law_test` the problem's law test ("c").
+  /// every tick applied the law, or when none of `judged` moved (moved()); then a line says so.
+  /// `whose` names the law ("your PART3 controller"), `law_test` the problem's law test ("c").
   bool admits(Check& check, const std::string& whose, const std::string& law_test,
               const std::vector<Judgement>& judged) const {
     if (!check.that(ticks_ > 0, whose + " was never called in the run")) return false;
     if (!differs_) return true;
-    const std::string differs = whose + "'s torque is not the problem set's law along the run (the law test " +
-                                law_test + " shows which term): it differs by up to " + torque(largest_) + ", " +
-                                percent(largest_share_) + " of the law's torque, at " + at(largest_t_);
-    if (!check.that(largest_share_ <= kDifferentLaw,
-                    differs + ", more than " + percent(kDifferentLaw) +
-                        ": a different law, which earns no points for its behaviour, whatever the run does"))
-      return false;
+    const std::string differs = whose + " is not the problem set's law along the run (the law test " + law_test +
+                                " costs its points for it): it differs in " + where();
     for (const Judgement& j : judged) {
-      const bool moved = !(std::abs(j.yours - j.reference) <= kMovedShare * std::abs(j.bound));
-      if (!check.that(!moved, differs + ": a slip, but it moved the judged " + j.statistic +
-                                  " more than a tenth of the bound from the reference's: this test earns none"))
+      if (!check.that(!moved(j), differs + ". That moved the judged " + j.statistic + " from the reference's " +
+                                     shown(j, j.reference) + " to " + shown(j, j.yours) + ", further than " + moved_why(j) +
+                                     " (" + shown(j, moved_within(j)) + "): the run is not the law's, and this test earns none"))
         return false;
     }
-    check.judged_note("a slip of the law (" + percent(largest_share_) + " of its torque at most; the law test " +
-                      law_test + " costs its points) that moved nothing this test judges: the run is judged as it is");
+    check.judged_note("a slip: " + differs + "; it moved nothing this test judges from where the law puts it (the "
+                      "reference's, give or take a tenth of the bound), so the run is judged as it is");
     return true;
   }
 
  private:
-  static std::string at(double t) { return format_number("t = %.3f s", t); }
-  static std::string torque(double tau) { return format_number("%.3g N m", tau); }
-  static std::string percent(double share) { return format_number("%.2g %%", 100 * share); }
-  static std::string format_number(const char* format, double v) {
+  /// A part's size below this (N or N m) counts as this when ranking: a part the law leaves at
+  /// zero (a force-controlled direction's motion term) still ranks by what it is given.
+  static constexpr double kSizeFloor = 1e-2;
+  struct Part {
+    double largest = 0.0, t = 0.0, law = 0.0;  ///< the largest |difference|, its time, the law's value there
+    double size = 0.0;                         ///< the largest |law's value| at the ticks that differ
+  };
+  static std::string number(const char* format, double v) {
     char buffer[48];
     std::snprintf(buffer, sizeof buffer, format, v);
     return buffer;
+  }
+  static std::string shown(const Judgement& j, double v) {
+    return std::isnan(v) ? std::string("none") : number("%.4g", v * j.unit_scale) + (j.unit.empty() ? "" : " " + j.unit);
   }
 
   double tol_;
   long ticks_ = 0;
   bool differs_ = false;
-  double largest_share_ = 0.0, largest_t_ = 0.0, largest_ = 0.0;
+  std::vector<LawPart> names_;
+  std::vector<Part> parts_;
 };
 
 /// A statistic a behaviour test judges, with what the problem set means by its bound.

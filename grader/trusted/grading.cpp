@@ -126,6 +126,7 @@ double plotted_statistic(const RunFigure& f, const Series& s) {
 
 void Check::show(const Judgement& j) {
   judged_.push_back(j.line());
+  judgements_.push_back(j);
   for (RunFigure& f : figures_)
     if (!f.draws.empty() && f.draws == j.statistic) f.verdict_yours = j.yours, f.verdict_reference = j.reference;
 }
@@ -155,6 +156,7 @@ TestResult run_test(const GradedTest& test, const Hw2Api& api) {
     result.findings = check.findings();
     result.figures = check.figures();
     result.judged = check.judged();
+    result.judgements = check.judgements();
     result.table = check.table();
   } catch (const StudentException& e) {
     result.findings = {e.what()};

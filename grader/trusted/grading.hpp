@@ -64,6 +64,11 @@ struct Judgement {
   bool upper = true;        ///< the bound is a maximum (at_most), else a minimum (at_least)
   double unit_scale = 1.0;  ///< SI value times this: the value shown
   std::string unit;         ///< its unit as shown
+  /// How far from the reference's a run of a law that is not exactly the problem's may lie and
+  /// still be the law's behaviour (law_pin.hpp, SI); NaN: a tenth of the bound. Wider only for
+  /// a statistic of a chaotic run, with the spread measured on the law itself (`moved_why`).
+  double moved_within = std::numeric_limits<double>::quiet_NaN();
+  std::string moved_why;  ///< why moved_within is what it is, as the page says it
   /// "position error RMS after 1 s: yours 0.21 mm, the reference's 0.21 mm, bound at most 1 mm: met"
   std::string line() const;
 };
@@ -119,6 +124,8 @@ class Check {
   const std::vector<std::string>& findings() const { return findings_; }  ///< what failed, in order
   const std::vector<RunFigure>& figures() const { return figures_; }  ///< the runs the test judged
   const std::vector<std::string>& judged() const { return judged_; }  ///< what was judged, in order
+  /// The statistics judged or shown (judge(), show()), in order: their values, for the suite's own tests.
+  const std::vector<Judgement>& judgements() const { return judgements_; }
   /// The first failed near() of a matrix or vector of matching shape, entry by entry (empty
   /// `what` if none).
   const EntryTable& table() const { return table_; }
@@ -129,6 +136,7 @@ class Check {
   std::vector<std::string> findings_;
   std::vector<RunFigure> figures_;
   std::vector<std::string> judged_;
+  std::vector<Judgement> judgements_;
   EntryTable table_;
 };
 
@@ -164,6 +172,7 @@ struct TestResult {
   std::string printed;  ///< what the student's code printed during the test (sanitized, cut)
   std::vector<RunFigure> figures;  ///< the runs a simulated test judged (Check::figure)
   std::vector<std::string> judged;  ///< what a simulated test judged, yours and the reference's (Check::judge)
+  std::vector<Judgement> judgements;  ///< the same statistics as values (Check::judgements)
   EntryTable table;                ///< the first wrong matrix or vector, entry by entry
   std::string mistake;             ///< the known mistake named for this test (catalogue), if any
 };

@@ -35,6 +35,10 @@ using hw2::p1b::Matrix6d;
 // correct arrangement (and a pseudo-inverse by SVD or by J^T (J J^T)^-1 at these well
 // conditioned states) and rejects every wrong term, which changes tau at order 1.
 constexpr double kLawTol = 1e-6;
+// How far a statistic of PART2's chaotic run may lie from the reference's and still be PART2's
+// behaviour (part2_drifts_more_than_part3 says how they were measured).
+constexpr double kPart2Q2Moved = 0.25;    // rad
+constexpr double kRatioMovedShare = 0.5;  // of the reference's ratio
 constexpr int kStates = 8;
 
 const Model& puma() {
@@ -102,9 +106,13 @@ const Run& run(const Hw2Api& api, Part part) {
   return pinned_run<p1b::Result>(api.identity, static_cast<int>(part), kLawTol, [&api, part](LawPin& pin) {
     scenarios::RunOptions options;
     options.duration = scenarios::p1b::Scenario::kGradedDuration;  // as hw2-p1 --test replays it
+    // Where the law acts: the tip force F = Jbar_v^T tau per direction, and N^T tau = (I - Jv^T Jbar_v^T) tau.
+    pin.name_parts(task_parts({{"the tip force F_x", "N"}, {"the tip force F_y", "N"}, {"the tip force F_z", "N"}}, 6));
     const auto pinned = [control = api.p1b.control, &pin](Part p, const hw2::p1b::State& s, const hw2::p1b::Goal& goal) {
       const Vector6d tau = control(p, s, goal);
-      pin.see(s.t, expected_torque(p, s, goal), tau);
+      pin.see(s.t, expected_torque(p, s, goal), tau, [&s] {
+        return task_split(s.Jbar_v, Matrix6d::Identity() - s.Jbar_v * s.Jv);
+      });
       return tau;
     };
     return p1b::run(part, pinned, options);
@@ -272,8 +280,18 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
   // PART2 must still be the null-space law: its joint task keeps joint 2 near q_d (amplitude
   // pi/8 = 0.39 rad) even while the tip drifts, whereas an arm left without control (a
   // stub, zero torque) falls towards its hanging pose, more than 1 rad from q_d.
-  const Judged q2{judgement("PART2 max q2 tracking error after 2 s", api, part2, &q2_max, p1b::kPart2Q2ErrorMax, 1.0, "rad"),
-                  "PART2 applies the joint task through its projector: joint 2 should still follow q_d"};
+  // PART2's run is chaotic: the drifting arm amplifies round-off. The problem set's law with its
+  // torque scaled by 1 + k 1e-12 (k = 0 ... 7, far inside the law test's 1e-6) ends with a max q2
+  // error from 0.28 to 0.39 rad and a ratio from 737 to 878 (tests/mutants/test_law_gate.cpp,
+  // "1b's PART2 run is chaotic ..."). So a law that is not exactly PART2's has moved these only
+  // beyond twice that spread: 0.25 rad of q2 (spread 0.11), half the reference's ratio (spread
+  // 141 of 878). A law staging a drift does: PART3's law aimed 5 cm off x_d ends at a ratio of
+  // 149, the null-space task without g at 134.
+  Judgement q2_judgement =
+      judgement("PART2 max q2 tracking error after 2 s", api, part2, &q2_max, p1b::kPart2Q2ErrorMax, 1.0, "rad");
+  q2_judgement.moved_within = kPart2Q2Moved;
+  q2_judgement.moved_why = "twice the spread of PART2's chaotic run";
+  const Judged q2{q2_judgement, "PART2 applies the joint task through its projector: joint 2 should still follow q_d"};
   // The lesson of problem 1b. With J+ the null-space torque leaves Jv^T (Jbar_v - Jv+)^T g
   // (plus the projected joint task) acting on the tip, tens of newtons at these poses, while
   // PART3 leaves none: the PART2 tip error must be at least ten times PART3's.
@@ -283,6 +301,8 @@ void part2_drifts_more_than_part3(const Hw2Api& api, Check& check) {
   ratio.reference = reference_statistic("1b tip error RMS of PART2 over PART3's", [] {
     return drift_ratio(reference_run(Part::kPseudoInverseNullspace), reference_run(Part::kDynamicallyConsistentNullspace));
   });
+  ratio.moved_within = kRatioMovedShare * ratio.reference;  // PART2's chaos, as for q2 above
+  ratio.moved_why = "half the reference's ratio (PART2's run is chaotic)";
   const Judged drift{ratio, "yours: " + mm(r2.summary.tip_error_rms) + " over " + mm(r3.summary.tip_error_rms) +
                                 ". The pseudo-inverse projector is not dynamically consistent: its null-space torques "
                                 "accelerate the tip"};

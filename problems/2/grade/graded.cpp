@@ -148,9 +148,11 @@ const Run& run(const Hw2Api& api) {
   return pinned_run<p2::Result>(api.identity, 0, kLawTol, [&api](LawPin& pin) {
     scenarios::RunOptions options;
     options.duration = scenarios::p2::Scenario::kGradedDuration;  // two periods: the drift test compares them
+    // Where the law acts: the task force [F; M] = Jbar0^T tau per direction, and N0^T tau.
+    pin.name_parts(task_parts({{"F_x", "N"}, {"F_y", "N"}, {"F_z", "N"}, {"M_x", "N m"}, {"M_y", "N m"}, {"M_z", "N m"}}, 7));
     const auto pinned = [control = api.p2.control, &pin](const hw2::p2::State& s, const hw2::p2::Goal& goal) {
       const Vector7d tau = control(s, goal);
-      pin.see(s.t, expected_torque(s, goal), tau);
+      pin.see(s.t, expected_torque(s, goal), tau, [&s] { return task_split(s.Jbar0, s.N0); });
       return tau;
     };
     return p2::run(pinned, problem_set_xddot_d, options);

@@ -1,9 +1,9 @@
 // Known mistakes of problem 2. The law is written out with one mistake made; 2(a)'s mistake
 // wraps the function it is given (the reference solutions, or the grader's oracle). Every
-// simulated test pins the law at every tick of the run (law_pin.hpp): a different law (a term
-// left out or replaced) costs all five of them, whatever the run's behaviour; a slip of one of
-// the law's terms that moves nothing a test judges costs the law test alone. The comments say
-// what the run shows; its rubric (guide.md) lists the points each costs.
+// simulated test pins the law at every tick of the run (law_pin.hpp): a mistake costs each
+// behaviour test whose judged statistic it moves, and a slip that moves nothing a test judges
+// costs the law test alone. The comments say what the run shows; its rubric (guide.md) lists
+// the points each costs.
 #include <opspace/algorithms/euler_params.hpp>
 #include <problems/2/contract.hpp>
 #include <opspace/math/constants.hpp>
@@ -80,13 +80,19 @@ std::vector<Mistake> mistakes_2() {
   namespace id = test_id::p2;
   const std::vector<std::string> law_and_run = {id::kLaw, id::kSimPosition, id::kSimOrientation,
                                                 id::kSimContinuous, id::kSimJointLimits, id::kSimSelfMotion};
+  // A law that brakes or sags the task: the tracking and the joints' excursion move; lambda
+  // stays continuous and the self-motion damped.
+  const std::vector<std::string> law_and_tracking = {id::kLaw, id::kSimPosition, id::kSimOrientation,
+                                                     id::kSimJointLimits};
   return {
       // The PD alone lags the trajectory: 3.9 mm RMS in position, 0.03 rad RMS in orientation
-      // (closed forms in problems/2/grade/graded.cpp); the arm still moves as it should otherwise.
+      // (closed forms in problems/2/grade/graded.cpp), and a joint goes 2.46 deg past its limit
+      // against the reference's 1.95 deg (moved by 0.51 deg, a tenth of the 5 deg bound being
+      // 0.5); lambda stays continuous and the self-motion damped.
       {"no feed-forward acceleration [vdot_d; wdot_d]",
        "the command is -kpx e - kvx (edot) + [vdot_d; wdot_d], with [vdot_d; wdot_d] = E^+ xddot_d from 2(b)",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_feed_forward>; },
-       law_and_run},
+       law_and_tracking},
       // For unit Euler parameters delta_phi is the same at lambda_d (test_euler_params.cpp), and
       // E^+(lambda_d) xdot_d differs from E^+(lambda) xdot_d only to second order in the
       // tracking error: along the run the torque differs from the law's by 0.015 % at most and
@@ -103,22 +109,22 @@ std::vector<Mistake> mistakes_2() {
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::delta_phi_flipped>; },
        law_and_run},
       // The task is still tracked, but the elbow's self-motion is undamped: the arm's posture
-      // wanders by tens of degrees per period.
+      // wanders by tens of degrees per period; every other statistic stays where the law puts it.
       {"no null-space damping N0^T A (-kvj dq)",
        "the null-space term is N0^T (A (-kvj dq) + g): it damps the self-motion",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_nullspace_damping>; },
-       law_and_run},
+       {id::kLaw, id::kSimSelfMotion}},
       // A (-kvj dq) unprojected damps the task motion too: the arm lags by centimetres.
       {"joint damping A (-kvj dq) added without the projector N0^T",
        "the joint damping goes through N0^T, so that it cannot act on the task",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::damping_not_projected>; },
-       law_and_run},
+       law_and_tracking},
       // Without p the task sags under the share of gravity the task carries: link7 tracks
       // centimetres below its path, tilted, and the arm's joints take another path, past a limit.
       {"p, the gravity at the task, left out of the task force",
        "F = Lambda0 (...) + p, with p = Jbar0^T g; N0^T g alone compensates only the null space's share",
        [](Hw2Api& api) { api.p2.control = &with<&Mistakes::no_p>; },
-       law_and_run},
+       law_and_tracking},
       // The runs take xddot_d from the problem set's closed forms, not from the student's 2(a)
       // (problems/2/grade/graded.cpp): a wrong 2(a) costs its own test and nothing else.
       {"2(a) without the -sin(a) a'^2 term of the chain rule",

@@ -104,9 +104,17 @@ const Run& run(const Hw2Api& api) {
   return pinned_run<p3::Result>(api.identity, 0, kLawTol, [&api](LawPin& pin) {
     scenarios::RunOptions options;
     options.duration = scenarios::p3::Scenario::kGradedDuration;  // as hw2-p3 --test replays it
+    // Where the law acts: [F; M] = Jbar0^T tau per direction, each marked by its selection, and N0^T tau.
+    pin.name_parts(task_parts({{"F_x (force-controlled)", "N"},
+                               {"F_y (motion-controlled)", "N"},
+                               {"F_z (motion-controlled)", "N"},
+                               {"M_x (motion-controlled)", "N m"},
+                               {"M_y (force-controlled)", "N m"},
+                               {"M_z (force-controlled)", "N m"}},
+                              7));
     const auto pinned = [control = api.p3.control, &pin](const hw2::p3::State& s, const hw2::p3::Goal& goal) {
       const Vector7d tau = control(s, goal);
-      pin.see(s.t, expected_torque(s, goal), tau);
+      pin.see(s.t, expected_torque(s, goal), tau, [&s] { return task_split(s.Jbar0, s.N0); });
       return tau;
     };
     return p3::run(pinned, options);

@@ -17,6 +17,23 @@ namespace {
 // the arm's weight share (newtons); 1e-6 N is rounding.
 constexpr double kTouching = 1e-6;
 
+// lambda -> lambda (x) q, the Euler parameters of R(lambda) R(q) (Hamilton's product, scalar
+// first): linear in lambda, so it maps lambda_d's derivatives too.
+Eigen::Matrix4d right_product(const Eigen::Vector4d& q) {
+  Eigen::Matrix4d m;
+  m << q(0), -q(1), -q(2), -q(3),  //
+      q(1), q(0), q(3), -q(2),     //
+      q(2), -q(3), q(0), q(1),     //
+      q(3), q(2), -q(1), q(0);
+  return m;
+}
+
+// The probe's tilt of lambda_d: kProbeTilt about link7's own y axis, which lies in the plane.
+const Eigen::Matrix4d& probe_tilt() {
+  static const Eigen::Matrix4d m = right_product(Eigen::Vector4d(std::cos(kProbeTilt / 2), 0.0, std::sin(kProbeTilt / 2), 0.0));
+  return m;
+}
+
 }  // namespace
 
 void Scenario::summarise(Result& result, const Model&, const Simulation&) const {
@@ -108,12 +125,12 @@ Vector7d initial_q() {
   static const Vector7d q0 = [] {
     const Model iiwa = load_urdf(robot_path(kRobotFile));
     Observer observer(iiwa);
-    const hw2::p3::Goal g = goal(0.0);
+    const Vector7d x_d = p2::desired(0.0).x;  // the problem set's pose, without goal()'s probes
     Vector7d q = p2::initial_q();
     for (int iteration = 0; iteration < 20; ++iteration) {
-      const hw2::p3::State& s = observer.observe(0.0, q, Vector7d::Zero(), g.x_d.tail<4>());
+      const hw2::p3::State& s = observer.observe(0.0, q, Vector7d::Zero(), x_d.tail<4>());
       Vector6d error;
-      error << s.x_p - g.x_d.head<3>(), orientation_error(s.lambda, g.x_d.tail<4>());
+      error << s.x_p - x_d.head<3>(), orientation_error(s.lambda, x_d.tail<4>());
       if (error.norm() < 1e-14) return q;
       q -= pseudo_inverse(s.J0) * error;
     }
@@ -128,6 +145,15 @@ hw2::p3::Goal goal(double t) {
   g.x_d = r.x;
   g.xdot_d = r.xdot;
   g.xddot_d = r.xddot;
+  // The force-controlled directions' probes, which the law's Omega removes: x_d along x moves
+  // through the plane (kProbeAmplitude), lambda_d is tilted off it (kProbeTilt).
+  const double w = 2.0 * kPi / kPeriod;
+  g.x_d(0) = kProbeAmplitude * std::sin(w * t);
+  g.xdot_d(0) = kProbeAmplitude * w * std::cos(w * t);
+  g.xddot_d(0) = -kProbeAmplitude * w * w * std::sin(w * t);
+  g.x_d.tail<4>() = probe_tilt() * r.x.tail<4>();
+  g.xdot_d.tail<4>() = probe_tilt() * r.xdot.tail<4>();
+  g.xddot_d.tail<4>() = probe_tilt() * r.xddot.tail<4>();
   g.F_d << kPushForce, 0, 0, 0, 0, 0;
   g.kpx = 50.0;
   g.kvx = 20.0;
@@ -153,14 +179,15 @@ Sample Scenario::tick(Observer& observer, Simulation& sim, const GainOverrides& 
   sample.t = t;
   sample.x_p = state.x_p;
   sample.lambda = state.lambda;
-  sample.x_d = g.x_d;
+  const Vector7d x_d = p2::desired(t).x;  // what the tests judge: the problem set's, without the probes
+  sample.x_d = x_d;
   const Wrench& w = sim.contact_wrench(tool_body_);
   sample.tool_force = -w.force;
   sample.tool_moment = -w.moment;
   for (const Contact& c : sim.contacts()) sample.contact_points += c.body == tool_body_ ? 1 : 0;
   const Eigen::Vector3d tool_axis = rotation_matrix(state.lambda).col(2);
   sample.tilt = std::atan2(tool_axis.cross(Eigen::Vector3d::UnitX()).norm(), tool_axis.x());
-  sample.rotation_x_error = orientation_error(state.lambda, g.x_d.tail<4>()).x();
+  sample.rotation_x_error = orientation_error(state.lambda, x_d.tail<4>()).x();
   sample.q = state.q;
   sample.tau = tau;
   return sample;
