@@ -141,6 +141,7 @@ class LawPin {
     const std::string differs = whose + " is not the problem set's law along the run (the law test " + law_test +
                                 " costs its points for it): it differs in " + where();
     for (const Judgement& j : judged) {
+      if (moved(j)) check.replace_hint();  // the finding names what differs
       if (!check.that(!moved(j), differs + ". That moved the judged " + j.statistic + " from the reference's " +
                                      shown(j, j.reference) + " to " + shown(j, j.yours) + ", further than " + moved_why(j) +
                                      " (" + shown(j, moved_within(j)) + "): the run is not the law's, and this test earns none"))
@@ -174,6 +175,14 @@ class LawPin {
   std::vector<LawPart> names_;
   std::vector<Part> parts_;
 };
+
+/// Whether a run went to its end (`failure` empty); if not, the test's finding says so, before
+/// and in place of any hint.
+inline bool ran_to_the_end(Check& check, const std::string& failure) {
+  if (failure.empty()) return true;
+  check.replace_hint();
+  return check.that(false, "the run stopped early: " + failure);
+}
 
 /// A statistic a behaviour test judges, with what the problem set means by its bound.
 struct Judged {

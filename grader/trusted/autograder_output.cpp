@@ -84,7 +84,7 @@ std::string feedback(const TestResult& r, std::uint64_t seed = 0) {
   for (const std::string& j : r.judged) text += "judged: " + j + "\n";
   for (const std::string& f : r.findings) text += "- " + f + "\n";
   const bool failed = r.score < r.test->points;
-  if (failed && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";
+  if (failed && !r.interrupted && !r.diagnosed && !r.hint_replaced) text += "hint: " + r.test->hint + "\n";
   if (failed) text += entry_grid(r.table);
   if (failed && seed != 0) {
     for (const RunFigure& f : r.figures) text += run_table(f);
@@ -118,7 +118,7 @@ std::string feedback_html(const TestResult& r, std::uint64_t seed) {
   for (const std::string& j : r.judged) text += "judged: " + j + "\n";
   for (const std::string& f : r.findings) text += "- " + f + "\n";
   const bool failed = r.score < r.test->points;
-  if (failed && !r.interrupted && !r.diagnosed) text += "hint: " + r.test->hint + "\n";
+  if (failed && !r.interrupted && !r.diagnosed && !r.hint_replaced) text += "hint: " + r.test->hint + "\n";
   const std::string replay = failed && seed != 0 ? replay_command(*r.test, seed) : "";
   if (!replay.empty()) text += "replay it on your machine: " + replay + "\n";
   if (!r.printed.empty()) text += "your code printed:\n" + quote_block(r.printed, "");

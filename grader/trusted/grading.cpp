@@ -157,6 +157,7 @@ TestResult run_test(const GradedTest& test, const Hw2Api& api) {
     result.figures = check.figures();
     result.judged = check.judged();
     result.judgements = check.judgements();
+    result.hint_replaced = check.hint_replaced();
     result.table = check.table();
   } catch (const StudentException& e) {
     result.findings = {e.what()};

@@ -117,6 +117,10 @@ class Check {
   void show(const Judgement& j);
   /// Caps the test's credit at `fraction` (partial credit for a measured quantity).
   void credit_at_most(double fraction, const std::string& message);
+  /// The findings say what went wrong in its place (the run stopped early, or where the law
+  /// differs): the report shows no fixed hint, which could blame a part the student got right.
+  void replace_hint() { hint_replaced_ = true; }
+  bool hint_replaced() const { return hint_replaced_; }
   /// Keeps a run's figure for the report. Never changes the credit.
   void figure(RunFigure figure) { figures_.push_back(std::move(figure)); }
 
@@ -137,6 +141,7 @@ class Check {
   std::vector<RunFigure> figures_;
   std::vector<std::string> judged_;
   std::vector<Judgement> judgements_;
+  bool hint_replaced_ = false;
   EntryTable table_;
 };
 
@@ -169,6 +174,8 @@ struct TestResult {
   bool grader_fault = false;
   /// A known mistake was named for this test: the likely-mistake line replaces the hint.
   bool diagnosed = false;
+  /// The findings say what went wrong in place of the hint (Check::replace_hint).
+  bool hint_replaced = false;
   std::string printed;  ///< what the student's code printed during the test (sanitized, cut)
   std::vector<RunFigure> figures;  ///< the runs a simulated test judged (Check::figure)
   std::vector<std::string> judged;  ///< what a simulated test judged, yours and the reference's (Check::judge)

@@ -28,8 +28,10 @@ using hw2::p2::Vector7d;
 using State = hw2::p2::State;
 
 /// The goal at time t and the gains (problem-set values in problems/3/run/scenario.hpp). The library
-/// computes the whole desired trajectory of problem 2, x_d, xdot_d and xddot_d (x_d's first
-/// component is unused here: x is force-controlled), and the desired generalized force F_d.
+/// computes the desired trajectory x_d, xdot_d and xddot_d: problem 2's in y, z and the rotation
+/// about x. What it says in the force-controlled directions is not the law's to follow: the
+/// scenario moves x_d along x through the plane and tilts lambda_d 5 degrees off it, and
+/// Omega removes both. F_d is the desired generalized force.
 struct Goal {
   Vector7d x_d;      ///< [x_d, y_d, z_d, lambda_0d, lambda_1d, lambda_2d, lambda_3d]
   Vector7d xdot_d;   ///< its time derivative

@@ -8,6 +8,8 @@
 #include <problems/3/run/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/math/constants.hpp"
+#include "opspace/algorithms/euler_params.hpp"
+#include <Eigen/Geometry>
 #include "opspace/model/urdf.hpp"
 #include "support/random.hpp"
 
@@ -43,20 +45,43 @@ TEST_CASE("problem 3 starts at rest with the tool face flat on the plane x = 0.0
   CHECK(moved.cwiseAbs().maxCoeff() < 1.5 * kDeg);
 }
 
-TEST_CASE("problem 3's goal is problem 2's trajectory with F_d = 10 N along x and the problem-set gains") {
+TEST_CASE("problem 3's goal is problem 2's trajectory in y and z, with F_d = 10 N along x and the problem-set gains") {
   opspace::testing::Random rng(731);
   for (int k = 0; k < 10; ++k) {
     const double t = rng.uniform(0.0, 10.0);
     const hw2::p3::Goal g = p3::goal(t);
     const scenarios::p2::Reference r = scenarios::p2::desired(t);
-    CHECK(g.x_d == r.x);
-    CHECK(g.xdot_d == r.xdot);
-    CHECK(g.xddot_d == r.xddot);
+    CHECK(g.x_d.segment<2>(1) == r.x.segment<2>(1));
+    CHECK(g.xdot_d.segment<2>(1) == r.xdot.segment<2>(1));
+    CHECK(g.xddot_d.segment<2>(1) == r.xddot.segment<2>(1));
     CHECK(g.F_d == (p3::Vector6d() << 10, 0, 0, 0, 0, 0).finished());
     CHECK(g.kpx == 50);
     CHECK(g.kvx == 20);
     CHECK(g.kvj == 20);
   }
+}
+
+// The probes of the force directions (issue 58): x_d = A sin(w t) along x, and lambda_d tilted
+// about link7's own y axis, R(lambda_d) = R(problem 2's lambda_d) R_y(tilt). Checked against the
+// closed form of the sine, the rotation matrices, and central differences (an independent
+// derivative: step 1e-5 s, truncation error about h^2 |x'''| / 6, under 1e-9).
+TEST_CASE("problem 3's goal moves x_d through the plane and tilts lambda_d off it, with consistent derivatives") {
+  const double w = 2.0 * kPi / p3::kPeriod;
+  opspace::testing::Random rng(732);
+  for (int k = 0; k < 10; ++k) {
+    const double t = rng.uniform(0.0, 10.0);
+    const hw2::p3::Goal g = p3::goal(t);
+    CHECK(g.x_d(0) == doctest::Approx(p3::kProbeAmplitude * std::sin(w * t)).epsilon(1e-12));
+    const Eigen::Matrix3d tilt = Eigen::AngleAxisd(p3::kProbeTilt, Eigen::Vector3d::UnitY()).toRotationMatrix();
+    const Eigen::Matrix3d expected = rotation_matrix(scenarios::p2::desired(t).x.tail<4>()) * tilt;
+    CHECK((rotation_matrix(g.x_d.tail<4>()) - expected).norm() < 1e-12);
+    const double h = 1e-5;
+    const hw2::p3::Goal before = p3::goal(t - h), after = p3::goal(t + h);
+    CHECK(((after.x_d - before.x_d) / (2 * h) - g.xdot_d).norm() < 1e-8);
+    CHECK(((after.xdot_d - before.xdot_d) / (2 * h) - g.xddot_d).norm() < 1e-8);
+  }
+  // At t = 0 the goal is on the plane: x_d = 0, so the run starts where the face touches it.
+  CHECK(p3::goal(0.0).x_d(0) == 0.0);
 }
 
 TEST_CASE("the plane pushes a penetrating tool back along -x: the tool's push on the plane is -contact_wrench") {

@@ -22,6 +22,7 @@
 #include "problems/2/tests.hpp"
 #include "report.hpp"
 #include "graded_suite.hpp"
+#include "law_pin.hpp"
 #include "tests/support/gradescope_html.hpp"
 
 namespace grading = opspace::grading;
@@ -64,6 +65,23 @@ void check_figures_draw_their_verdicts(const grading::TestResult& r) {
 
 // Every "likely mistake" line the grader prints for `api`, problem by problem; `json`, if given,
 // gets the results.json of the grading, and `failed` the identities of the tests that lost points.
+// A simulated test that lost points did so on its own numbers (issue 58): one of its judged
+// statistics missed its bound or moved from the reference's (law_pin.hpp), or the run never got
+// to judging (it stopped early, never pushed, never reached: then nothing is judged). One that
+// earned them judged every statistic met and unmoved, or the run was the law's.
+void check_lost_on_its_numbers(const grading::TestResult& r) {
+  if (r.test->replay.empty() || r.judgements.empty()) return;
+  std::string statistics;
+  bool missed = false;
+  for (const grading::Judgement& j : r.judgements) {
+    const bool met = std::isfinite(j.yours) && (j.upper ? j.yours <= j.bound : j.yours >= j.bound);
+    statistics += "\n    " + j.line() + (grading::moved(j) ? " (moved)" : "");
+    missed = missed || !met || grading::moved(j);
+  }
+  INFO(r.test->title << " earned " << r.score << " of " << r.test->points << "; its statistics:" << statistics);
+  if (r.score < r.test->points) CHECK(missed);
+}
+
 std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* json = nullptr,
                                      std::set<std::string>* failed = nullptr) {
   std::set<std::string> named;
@@ -76,6 +94,7 @@ std::set<std::string> named_mistakes(const grading::Hw2Api& api, std::string* js
     result.results = grading::run_tests(problem.tests, api, nullptr, 0.0, &catalogue);
     for (const grading::TestResult& r : result.results) {
       check_figures_draw_their_verdicts(r);
+      check_lost_on_its_numbers(r);
       result.score += r.score;
       result.max_score += r.test->points;
       if (failed && r.score < r.test->points) failed->insert(r.test->id);

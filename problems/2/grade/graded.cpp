@@ -259,7 +259,7 @@ Judgement judgement(const std::string& statistic, const p2::Result& mine, Of of,
 // it that moved nothing the test judges (law_pin.hpp).
 void judge(const Hw2Api& api, Check& check, const std::vector<Judged>& judged) {
   const Run& r = run(api);
-  if (!check.that(r.result.failure.empty(), "the run stopped early: " + r.result.failure)) return;
+  if (!ran_to_the_end(check, r.result.failure)) return;
   judge_run(check, r.pin, "your controller", "c", judged);
 }
 

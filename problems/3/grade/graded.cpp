@@ -11,6 +11,8 @@
 #include <opspace/model/urdf.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <limits>
 
 #include "pinned_run.hpp"
@@ -127,6 +129,13 @@ const p3::Result& reference_run() {
   return run(oracles).result;
 }
 
+// "90.1 deg".
+std::string format_degrees(double radians) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g deg", radians / kDeg);
+  return text;
+}
+
 // The series the checks read (problems/3/run/scenario.hpp, which the programs' --test replay shares).
 using p3::force_error;
 using p3::push;
@@ -163,7 +172,7 @@ Judgement judgement(const std::string& statistic, const Hw2Api& api, Of of, doub
 // it that moved nothing the test judges (law_pin.hpp); `contact`: only if the tool touched the plane.
 void judge(const Hw2Api& api, Check& check, const std::vector<Judged>& judged, bool contact) {
   const Run& r = run(api);
-  if (!check.that(r.result.failure.empty(), "the run stopped early: " + r.result.failure)) return;
+  if (!ran_to_the_end(check, r.result.failure)) return;
   if (contact && !check.that(r.result.summary.first_contact_time >= 0.0, "the tool never pushed on the plane")) return;
   judge_run(check, r.pin, "your controller", "b", judged);
 }
@@ -216,14 +225,24 @@ void rotation_tracking(const Hw2Api& api, Check& check) {
          "its RMS after 1 s, drawn from 1 s on as the running RMS", Plotted::kRunningRms,
          "RMS rotation-about-x error after 1 s");
   // lambda_d turns link7 about x by 2a = (pi/2) cos(2 pi t/5). As in problem 2, without
-  // feed-forward the PD lags it by 0.032 rad RMS; the reference's error is 0.3 mrad RMS (the
-  // uncompensated Coriolis forces). 0.01 rad (0.57 deg) separates the two.
+  // feed-forward the PD lags it by 0.032 rad RMS; the reference's error is 0.6 mrad RMS (the
+  // uncompensated Coriolis forces, 0.3 mrad, and the goal's tilt off the plane, which E^+ at the
+  // current lambda feels as cos(2.5 deg) of the feed-forward: p3::kProbeTilt). 0.01 rad
+  // (0.57 deg) separates the two.
   judge(api, check,
         {{judgement("RMS rotation-about-x error after 1 s", api,
                     [](const p3::Result& x) { return x.summary.rotation_x_error_rms; }, p3::kRotationXErrorRmsMax,
                     1.0 / kDeg, "deg"),
           "link7 should turn about x with lambda_d(t)"}},
         false);
+  // A PD that pulls towards lambda_d keeps the error within its lag (0.032 rad without any
+  // feed-forward); past a quarter turn RMS the rotation ran away: positive feedback, the sign
+  // of delta_phi reversed. Said whatever else the law does; the test has failed by then.
+  const double rms = run(api).result.summary.rotation_x_error_rms;
+  if (run(api).result.failure.empty() && rms > kPi / 4)
+    check.that(false, "the rotation about x ran away from lambda_d (" + format_degrees(rms) +
+                          " RMS, beyond a quarter turn): positive feedback, as when delta_phi's sign is reversed; "
+                          "delta_phi = E_r^+ (lambda - lambda_d), and -kpx delta_phi turns link7 back to lambda_d");
 }
 
 void contact_kept(const Hw2Api& api, Check& check) {

@@ -112,9 +112,11 @@ std::vector<Mistake> mistakes_3() {
       {"the desired force multiplied by Lambda0 (treated as an acceleration)",
        "F_d is a force: Omega-bar F_d is added after Lambda0, not multiplied by it",
        [](Hw2Api& api) { api.p3.control = &with<&Mistakes::force_times_lambda>; },
-       {id::kLaw, id::kSimForce, id::kSimFlat, id::kSimPosition, id::kSimRotation, id::kSimContact}},
+       {id::kLaw, id::kSimForce, id::kSimPosition}},
       // Problem 2's law plus F_d: x is motion-controlled too, to the scenario's x_d, which moves
-      // 5 cm through the plane (p3::kProbeAmplitude): the push swings by about 9.5 N.
+      // 5 cm through the plane (p3::kProbeAmplitude): the push swings by about 9.5 N (5.5 N mean
+      // error), and M_y, M_z servo the tilted lambda_d (p3::kProbeTilt): 3 deg of tilt, 7.8 mm
+      // of y-z error. The rotation about x and the contact stay the law's.
       {"Omega and Omega-bar left out (problem 2's law plus F_d)",
        "Omega filters the motion command and Omega-bar the force: Lambda0 Omega (...) + p + Omega-bar F_d",
        [](Hw2Api& api) {
@@ -122,7 +124,9 @@ std::vector<Mistake> mistakes_3() {
          api.p3.force_selection = [] { return Matrix6d::Identity().eval(); };
          api.p3.control = &with<&Mistakes::no_selection>;
        },
-       {id::kSelection, id::kLaw, id::kSimForce, id::kSimContact}},
+       {id::kSelection, id::kLaw, id::kSimForce, id::kSimFlat, id::kSimPosition}},
+      // M_y and M_z servo lambda_d's 5-degree tilt (p3::kProbeTilt); the plane holds the face
+      // flat, but Lambda0 couples those moments into F_y: 5.8 mm of y-z error.
       {"the moments about y and z motion-controlled (Omega keeps M_y and M_z)",
        "M_y and M_z are force-controlled: Omega keeps F_y, F_z and M_x only, Omega-bar F_x, M_y and M_z",
        [](Hw2Api& api) {
@@ -130,13 +134,13 @@ std::vector<Mistake> mistakes_3() {
          api.p3.force_selection = &only_force_x;
          api.p3.control = &with<&Mistakes::moments_in_motion>;
        },
-       {id::kSelection, id::kLaw, id::kSimFlat}},
+       {id::kSelection, id::kLaw, id::kSimPosition}},
       // -kvx (v_x - xdot_d) along x: the scenario's xdot_d along x (5 cm at w = 2 pi / 5) adds
-      // a 4.3 N swing to the push (p3::kProbeAmplitude).
+      // a 4.3 N swing to the push (p3::kProbeAmplitude): 2.7 N mean error, and 3.3 mm of y-z.
       {"the task damping applied in every direction, outside Omega",
        "the damping -kvx ([v; w] - E^+ xdot_d) is part of the motion command, inside Lambda0 Omega (...)",
        [](Hw2Api& api) { api.p3.control = &with<&Mistakes::damping_everywhere>; },
-       {id::kLaw, id::kSimForce}},
+       {id::kLaw, id::kSimForce, id::kSimPosition}},
       // A later year's law: damping of the force directions' velocity. In contact the plane
       // holds v_x, w_y and w_z at zero, so the run judges as the reference's: the law test alone.
       {"damping added in the force directions (+ Lambda0 Omega-bar (-kvx [v; w]))",

@@ -359,7 +359,7 @@ void reaches(Target target, const Hw2Api& api, Check& check) {
   check.figure(run_figure(f, mine.samples, tip_error(target), "4 tip error " + p4::describe(target),
                           [target]() -> const auto& { return reference_run(target).samples; }));
   const p4::Result& plain = run_plain(target);
-  if (!check.that(mine.failure.empty(), "the run stopped early: " + mine.failure)) return;
+  if (!ran_to_the_end(check, mine.failure)) return;
   const std::string goal =
       std::string("the target 10 cm ") + (target == Target::kAlongZ0 ? "down " : "") + p4::describe(target);
   if (!check.that(mine.summary.reach_time >= 0.0,
