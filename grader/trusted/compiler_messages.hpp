@@ -17,8 +17,8 @@ std::string read_at_most(const std::string& path, std::size_t limit);
 /// work folder's name of the file (`work_file`) replaced by the name the student knows
 /// (`shown_as`): a grader line that quotes the error (student_line: each test of the problem
 /// carries this line), then the source line as a block (student_block) below it. A contract not
-/// found by its former path (<opspace/hw2/p1b.hpp>) is named with today's
-/// (<problems/1b/contract.hpp>) on the grader's line. Errors located in other files are shown
+/// found by its former path (<opspace/hw2/p<key>.hpp>) is named with today's
+/// (<problems/<key>/contract.hpp>) on the grader's line. Errors located in other files are shown
 /// only if those files are public headers (under `include_roots`).
 /// Empty if `output` holds no error. `tool` names the tool: "compiler", "linker".
 std::string first_error(const std::string& output, const std::string& work_file, const std::string& shown_as,
