@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -43,6 +44,19 @@ std::string replace_all(std::string text, const std::string& from, const std::st
   return text;
 }
 
+// "FILE includes its contract by its former path: write ... instead of ...; " when `error` is the
+// compiler's not finding a contract by the path it had before commit 77461ea
+// (<opspace/hw2/p<key>.hpp>, today <problems/<key>/contract.hpp>); else "FILE: ".
+std::string former_contract_path(const std::string& error, const std::string& shown_as) {
+  // GCC's "fatal error: X: No such file or directory", Clang's "fatal error: 'X' file not found".
+  static const std::regex former(R"(fatal error: '?opspace/hw2/p([0-9a-f]{1,2})\.hpp'?(: No such file or directory| file not found))");
+  std::smatch m;
+  if (!std::regex_search(error, m, former)) return shown_as + ": ";
+  const std::string key = m[1];  // one or two hexadecimal digits (problems.txt): nothing of the student's
+  return shown_as + " includes its contract by its former path: write #include <problems/" + key +
+         "/contract.hpp> instead of <opspace/hw2/p" + key + ".hpp>; ";
+}
+
 }  // namespace
 
 std::string first_error(const std::string& output, const std::string& work_file, const std::string& shown_as,
@@ -67,8 +81,13 @@ std::string first_error(const std::string& output, const std::string& work_file,
       const std::size_t at = shown.find("undefined reference");
       shown = shown_as + ": " + shown.substr(at);
     }
-    if (in_student_file && i + 1 < all.size() && !all[i + 1].empty() && all[i + 1][0] == ' ') shown += "\n" + all[i + 1];
-    return shown_as + ": the " + tool + "'s first error:\n" + student_block(shown, 600, shown.size());
+    // The error on the grader's line itself, quoted: the line each of the problem's tests
+    // carries (the source line below it is shown under the problem alone).
+    std::string out = former_contract_path(line, shown_as) + "the " + tool + "'s first error: " +
+                      student_line(shown, 300, shown.size());
+    if (in_student_file && i + 1 < all.size() && !all[i + 1].empty() && all[i + 1][0] == ' ')
+      out += "\n" + student_block(all[i + 1], 300, all[i + 1].size());
+    return out;
   }
   return "";
 }

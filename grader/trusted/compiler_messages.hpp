@@ -15,8 +15,11 @@ std::string read_at_most(const std::string& path, std::size_t limit);
 
 /// The tool's first error, "p1b.cpp:12:5: error: ...", and the source line below it, with the
 /// work folder's name of the file (`work_file`) replaced by the name the student knows
-/// (`shown_as`): a grader line, then the tool's own lines quoted below it. Errors located in
-/// other files are shown only if those files are public headers (under `include_roots`).
+/// (`shown_as`): a grader line that quotes the error (student_line: each test of the problem
+/// carries this line), then the source line as a block (student_block) below it. A contract not
+/// found by its former path (<opspace/hw2/p<key>.hpp>) is named with today's
+/// (<problems/<key>/contract.hpp>) on the grader's line. Errors located in other files are shown
+/// only if those files are public headers (under `include_roots`).
 /// Empty if `output` holds no error. `tool` names the tool: "compiler", "linker".
 std::string first_error(const std::string& output, const std::string& work_file, const std::string& shown_as,
                         const std::vector<std::string>& include_roots, const std::string& tool);

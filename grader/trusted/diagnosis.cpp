@@ -112,4 +112,11 @@ std::string diagnose(const std::vector<Mistake>& catalogue, const std::string& t
   return "";
 }
 
+bool explains(const Mistake& mistake, const Recording& recording) {
+  if (recording.calls.empty()) return true;
+  Hw2Api wrong = oracle::reference_api();
+  mistake.apply(wrong);
+  return reproduces_all(wrong, recording);
+}
+
 }  // namespace opspace::grading

@@ -40,4 +40,10 @@ bool not_written_yet(const Recording& recording);
 /// (empty if none does).
 std::string diagnose(const std::vector<Mistake>& catalogue, const std::string& test, const Recording& recording);
 
+/// Whether the grader's reference with `mistake` made gives every answer of `recording` (true
+/// for a recording without calls: it tells nothing). A mistake named by one test that another
+/// failed test it is aimed at contradicts is not the student's: two laws may answer alike at
+/// the states one test saw and apart at another's.
+bool explains(const Mistake& mistake, const Recording& recording);
+
 }  // namespace opspace::grading

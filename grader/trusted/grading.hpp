@@ -58,6 +58,9 @@ struct RunFigure {
 /// Shown on every simulated test, passed or failed, so that a verdict can be read off its numbers.
 struct Judgement {
   std::string statistic;  ///< what is judged, e.g. "position error RMS after 1 s"
+  /// Shown instead of `yours` when not empty: a value the run never took ("never" for the time
+  /// of an event that did not happen, `yours` then infinite).
+  std::string yours_text;
   double yours = std::numeric_limits<double>::quiet_NaN();      ///< of the student's run (SI)
   double reference = std::numeric_limits<double>::quiet_NaN();  ///< of the reference's run (SI)
   double bound = std::numeric_limits<double>::quiet_NaN();      ///< the check's bound (SI)
@@ -182,6 +185,10 @@ struct TestResult {
   std::vector<Judgement> judgements;  ///< the same statistics as values (Check::judgements)
   EntryTable table;                ///< the first wrong matrix or vector, entry by entry
   std::string mistake;             ///< the known mistake named for this test (catalogue), if any
+  /// Every answer the test saw from the code was zero, as the untouched stub's are: the report,
+  /// results.json and the page say so in one line (`findings`' last), without the judged values,
+  /// the plots or the hint, which would only describe the stub.
+  bool not_written = false;
 };
 
 class RunnerProcess;

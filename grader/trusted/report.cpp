@@ -102,6 +102,12 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
       const std::string score = format_points(r.score) + "/" + format_points(r.test->points);
       out << "  " << status(r) << "  " << score << std::string(score.size() < 6 ? 6 - score.size() : 1, ' ')
           << r.test->title << "\n";
+      if (r.not_written) {
+        // One line: the judged values, the hint and the replay would only describe the stub.
+        out << "          - " << r.findings.back() << "\n";
+        if (!r.printed.empty()) out << "          your code printed:\n" << quoted(r.printed);
+        continue;
+      }
       for (const std::string& j : r.judged) out << "          judged: " << j << "\n";
       if (r.score < r.test->points) {
         for (const std::string& finding : r.findings) out << "          - " << finding << "\n";

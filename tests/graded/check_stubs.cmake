@@ -60,6 +60,11 @@ endif()
 if(NOT out MATCHES "\nTotal: 0 / [0-9.]+ points")
   message(FATAL_ERROR "the untouched stubs earned points; a test that a stub passes cannot fail:\n${out}")
 endif()
+# The report too: a test not written yet is its status and one line, no judged value, hint or
+# replay, which would describe the stub alone (seen in the report before issue 58).
+if(out MATCHES "\n +(judged|hint|replay it): ")
+  message(FATAL_ERROR "the stubs' report shows judged values, hints or replays of tests not written yet:\n${out}")
+endif()
 # A grading that earned nothing names the first problem of problems.txt as where to start.
 list(GET OPSPACE_PROBLEM_KEYS 0 first)
 if(NOT out MATCHES "Where to start: open exercises/p${first}\\.cpp \\([^\n]+; guide problems/${first}/guide\\.md\\)\nand grade it alone: bash scripts/grade --problem ${first}\n")
@@ -71,6 +76,22 @@ if(WORK)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "the stubs' results.json")
   endif()
+  # Every test of the stubs is not written yet (docs/grader.md): on Gradescope each says so in one
+  # line, without plots. Before issue 58 the stubs' 41 tests took 17 screens of the page, with 19
+  # plots; 8 simulated tests, judging a run an earlier test made, did not say "not written yet".
+  file(READ "${WORK}/results.json" json)
+  string(JSON count LENGTH "${json}" tests)
+  math(EXPR last "${count} - 1")
+  foreach(i RANGE ${last})
+    string(JSON name GET "${json}" tests ${i} name)
+    string(JSON output GET "${json}" tests ${i} output)
+    string(JSON format GET "${json}" tests ${i} output_format)
+    # One line of text (no <pre>, no <img>): the only newline is the line's own end.
+    if(NOT format STREQUAL "text" OR NOT output MATCHES "^- not written yet: [^\n]*\n$")
+      message(FATAL_ERROR "the stubs' '${name}' does not say 'not written yet' in one line, alone:\n${output}")
+    endif()
+  endforeach()
+  message("ok   the stubs' results.json: each of the ${count} tests is one line, 'not written yet', without a plot")
   file(READ "${WORK}/report.html" page)
   # Each section of a failed simulated test, and those of them holding a figure: as many. The
   # page's lines joined, each section then starts a line of its own (and no ; splits a match

@@ -282,6 +282,56 @@ TEST_CASE("the report's page escapes every text, draws each figure from its data
   CHECK(rest.find_first_of("<>") == std::string::npos);
 }
 
+// A failed simulated test not written yet (TestResult::not_written), beside the same test failed by
+// written code: the first is its one line everywhere (issue 58: the stubs' 41 tests took 17
+// screens of Gradescope's page with 19 plots), the second keeps its judged line, hint, replay and
+// plot. Seen to fail before issue 58 (the not-written test showed all of them).
+TEST_CASE("a test not written yet is one line of text, without judged values, hint, replay or plot") {
+  grading::Problem problem;
+  problem.key = "1b";
+  problem.tests.push_back({"1b.iv.sim", "iv. in simulation the tip holds", 4.0, "the hint", {}, "hw2-p1 3"});
+  grading::ProblemResult result;
+  result.problem = &problem;
+  result.max_score = 8.0;
+  grading::TestResult r;
+  r.test = &problem.tests[0];
+  r.judged = {"tip error: yours 300 mm, the reference's 0.4 mm, bound at most 5 mm: not met"};
+  grading::RunFigure f;
+  f.quantity = "tip error |x - x_d|";
+  f.unit = "mm";
+  f.unit_scale = 1e3;
+  f.bound = 5e-3;
+  f.student = {{0.0, 5.0, 10.0}, {2e-3, 0.3, 0.1769}};
+  f.reference = {{0.0, 5.0, 10.0}, {2e-3, 4e-4, 5e-4}};
+  r.figures = {f};
+  r.findings = {"tip error: expected at most 5 mm, measured 300 mm", "not written yet: every value your code returned in "
+                "this test is zero, as the stub's are: fill in its FILL ME IN"};
+  grading::TestResult written = r;  // the same failure by code that answers
+  written.findings.pop_back();
+  r.not_written = true;
+  result.results = {r, written};
+  const std::string line = "- " + r.findings.back() + "\n";
+
+  for (const std::string format : {"html", "text"}) {
+    CAPTURE(format);
+    std::ostringstream out;
+    grading::write_gradescope(out, {result}, 1.0, {{}, "after_published", 42, format});
+    const nlohmann::json tests = nlohmann::json::parse(out.str()).at("tests");
+    CHECK(tests.at(0).at("output") == line);
+    CHECK(tests.at(0).at("output_format") == "text");
+    const std::string other = tests.at(1).at("output");
+    CHECK(tests.at(1).at("output_format") == format);
+    CHECK(other.find("judged: tip error") != std::string::npos);
+    CHECK(other.find("hint: the hint") != std::string::npos);
+    CHECK(other.find("replay it on your machine") != std::string::npos);
+    CHECK((other.find("<img") != std::string::npos) == (format == "html"));
+  }
+  std::ostringstream report;
+  grading::print_report(report, {result}, {}, 42);
+  CHECK(report.str().find("  FAIL  0/4   iv. in simulation the tip holds\n          " + line +
+                          "  FAIL  0/4   iv. in simulation the tip holds\n          judged: ") != std::string::npos);
+}
+
 TEST_CASE("a run's series is decimated to a plot's points, keeping its start, its peak and its end") {
   // 10001 samples of 1 ms (a 10 s run) of a value 0 but one spike of 7 at sample 4321, and a
   // final sample of 3: at most kFigurePoints points, the first and last samples as they were,

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler_messages.hpp"
 #include "runner_build.hpp"
 
 namespace fs = std::filesystem;
@@ -162,4 +163,37 @@ TEST_CASE("a header added, edited or removed under the toolchain's headers chang
   fs::remove(work / "contracts/problems/1a/tests.hpp");
   CHECK_MESSAGE(grading::load_toolchain(path).fingerprint == before, "the folder as it was gives the key it gave");
   fs::remove_all(work);
+}
+
+// The compiler's first error (compiler_messages.hpp) is on the grader's line, quoted: the line
+// each of the problem's tests carries. Before issue 58 that line ended in "first error:".
+TEST_CASE("the compiler's first error is on the grader's line, the source line below it") {
+  const std::string output =
+      "/work/src/p1b.cpp:5:84: error: expected ',' or ';' before 'return'\n"
+      "    5 |   Vector6d tau = Vector6d::Zero() return tau;\n";
+  const std::string shown = grading::first_error(output, "/work/src/p1b.cpp", "exercises/p1b.cpp", {}, "compiler");
+  CHECK(shown ==
+        "exercises/p1b.cpp: the compiler's first error: \"exercises/p1b.cpp:5:84: error: expected ',' or ';' before "
+        "'return'\"\n    5 |   Vector6d tau = Vector6d::Zero() return tau;");
+}
+
+// Each problem's contract by the path it had before commit 77461ea, as GCC and Clang say it:
+// the student is told today's. Before issue 58: the compiler's words alone.
+TEST_CASE("a contract included by its former path is named with today's, for every problem") {
+  for (const std::string key : {"1a", "1b", "2", "3", "4"}) {
+    CAPTURE(key);
+    const std::string file = "/work/src/p" + key + ".cpp";
+    const std::string told = "exercises/p" + key + ".cpp includes its contract by its former path: write #include <problems/" +
+                             key + "/contract.hpp> instead of <opspace/hw2/p" + key + ".hpp>; the compiler's first error: ";
+    const std::string gcc = file + ":2:10: fatal error: opspace/hw2/p" + key + ".hpp: No such file or directory\n";
+    const std::string clang = file + ":2:10: fatal error: 'opspace/hw2/p" + key + ".hpp' file not found\n";
+    for (const std::string& output : {gcc, clang}) {
+      const std::string shown = grading::first_error(output, file, "exercises/p" + key + ".cpp", {}, "compiler");
+      CHECK(shown.rfind(told, 0) == 0);
+    }
+  }
+  // Another header not found is the compiler's error alone.
+  const std::string other = grading::first_error("/work/src/p1b.cpp:2:10: fatal error: opspace/hw3/p1b.hpp: No such file or directory\n",
+                                                 "/work/src/p1b.cpp", "exercises/p1b.cpp", {}, "compiler");
+  CHECK(other.rfind("exercises/p1b.cpp: the compiler's first error: \"exercises/p1b.cpp:2:10: fatal error:", 0) == 0);
 }

@@ -10,11 +10,14 @@ cmake_minimum_required(VERSION 3.22)
 #     failure a case causes is the submission's, and none buys it a second grading;
 #   - each problem in SCORES ("1b=0;1a=23") earned exactly that;
 #   - the report matches EXPECT; neither it nor results.json's texts match FORBID (regular
-#     expressions) or hold a byte sequence of FORBID_BYTES (hexadecimal, ","-separated).
+#     expressions) or hold a byte sequence of FORBID_BYTES (hexadecimal, ","-separated);
+#   - each test of problem EACH_KEY in results.json (its output, as Gradescope shows it) matches
+#     EACH, a regular expression: what every one of its tests must carry.
 # Cases with ISOLATED=ON need the sandbox's private file view: skipped (SKIPPED:) without it.
 #   cmake -DGRADER=hw2-grade-sol -DSOLUTIONS=solutions -DCASE=cases/<case>.cpp [-DTARGET=p1b.cpp]
 #         -DWORK=dir -DREPO=root [-DTIMEOUT=seconds per test, 5] [-DPROBLEM=1b] [-DSCORES=...] [-DEXPECT=...] [-DFORBID=...] [-DFORBID_BYTES=e280a8,ff]
-#         [-DFAULT=...] [-DISOLATED=ON] [-DJOBS=2] [-DGRADER_ARGS=--no-isolation] -P run_case.cmake
+#         [-DFAULT=...] [-DISOLATED=ON] [-DJOBS=2] [-DGRADER_ARGS=--no-isolation]
+#         [-DEACH_KEY=1b -DEACH=regex] -P run_case.cmake
 # (GRADER_ARGS=--no-isolation turns the sandbox off: then the attacks succeed, which shows
 # that the cases can fail.)
 if(NOT TIMEOUT)
@@ -90,6 +93,23 @@ foreach(i RANGE ${last})
 endforeach()
 if(DEFINED FORBID AND shown MATCHES "${FORBID}")
   message(FATAL_ERROR "results.json says '${FORBID}', which it must not:\n${shown}")
+endif()
+if(DEFINED EACH_KEY)
+  set(each_count 0)
+  foreach(i RANGE ${last})
+    string(JSON name GET "${json}" tests ${i} name)
+    if(NOT name MATCHES "^${EACH_KEY} ")
+      continue()
+    endif()
+    math(EXPR each_count "${each_count} + 1")
+    string(JSON text GET "${json}" tests ${i} output)
+    if(NOT text MATCHES "${EACH}")
+      message(FATAL_ERROR "results.json's '${name}' does not say '${EACH}':\n${text}")
+    endif()
+  endforeach()
+  if(each_count EQUAL 0)
+    message(FATAL_ERROR "results.json has no test of problem ${EACH_KEY}")
+  endif()
 endif()
 # FORBID_BYTES: hexadecimal byte sequences (a bidi override, U+2028, a C1 control, an invalid
 # UTF-8 byte) that must appear neither in the report nor in results.json, at any byte offset.

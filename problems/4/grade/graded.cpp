@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 #include "pinned_run.hpp"
@@ -362,18 +363,29 @@ void reaches(Target target, const Hw2Api& api, Check& check) {
   if (!ran_to_the_end(check, mine.failure)) return;
   const std::string goal =
       std::string("the target 10 cm ") + (target == Target::kAlongZ0 ? "down " : "") + p4::describe(target);
-  if (!check.that(mine.summary.reach_time >= 0.0,
-                  "the tip never stayed within 5 mm of " + goal + " (final error " +
-                      millimetres(mine.summary.final_error) + ")"))
+  const std::vector<Judged> judged = {
+      {judgement("time until the tip stays within 5 mm of x_d", target, mine, &reach_time, kReachBound, "s"),
+       "Leaving the lock takes the potential a few tenths of a second, then the tip PD converges "
+       "in about 1 s"},
+      // The URDF's effort limit: a larger request is clamped by the simulation.
+      {judgement("peak joint torque", target, mine, &peak_torque, kEffortLimit, "N m"),
+       "Near the singularity Lambda_v must drop the singular directions, or its huge inertia "
+       "asks for huge torques"}};
+  if (mine.summary.reach_time < 0.0) {
+    // A run that went to its end without reaching: nothing, and the page shows what it judged,
+    // as every other failed run's (its reach time never came: infinite, "never").
+    check.that(false, "the tip never stayed within 5 mm of " + goal + " (final error " +
+                          millimetres(mine.summary.final_error) + ")");
+    for (Judged j : judged) {
+      if (j.judgement.yours < 0.0) {
+        j.judgement.yours = std::numeric_limits<double>::infinity();
+        j.judgement.yours_text = "never (final error " + millimetres(mine.summary.final_error) + ")";
+      }
+      check.show(j.judgement);
+    }
     return;
-  judge_run(check, run_of_mine.pin, "your controller " + p4::describe(target), "v",
-            {{judgement("time until the tip stays within 5 mm of x_d", target, mine, &reach_time, kReachBound, "s"),
-              "Leaving the lock takes the potential a few tenths of a second, then the tip PD converges "
-              "in about 1 s"},
-             // The URDF's effort limit: a larger request is clamped by the simulation.
-             {judgement("peak joint torque", target, mine, &peak_torque, kEffortLimit, "N m"),
-              "Near the singularity Lambda_v must drop the singular directions, or its huge inertia "
-              "asks for huge torques"}});
+  }
+  judge_run(check, run_of_mine.pin, "your controller " + p4::describe(target), "v", judged);
   // The contrast that makes the exercise: from the same start the plain controller either
   // never reaches x_d or only with torques beyond the limits. It does not depend on the
   // student's code: a failure here is a broken scenario, reported as such.
