@@ -147,8 +147,11 @@ class LawPin {
                                      " (" + shown(j, moved_within(j)) + "): the run is not the law's, and this test earns none"))
         return false;
     }
-    check.judged_note("a slip: " + differs + "; it moved nothing this test judges from where the law puts it (the "
-                      "reference's, give or take a tenth of the bound), so the run is judged as it is");
+    std::string within;  // each statistic's allowance, once
+    for (const Judgement& j : judged)
+      if (within.find(moved_why(j)) == std::string::npos) within += (within.empty() ? "" : "; ") + moved_why(j);
+    check.judged_note("a slip: " + differs + "; it left what this test judges where the law puts it (the reference's, "
+                      "within " + within + "), so the run is judged as it is");
     return true;
   }
 
