@@ -2,7 +2,9 @@
 //   hw2-class FOLDER [--anonymous] [--out DIR]
 // FOLDER holds one subfolder per student with its results.json (scripts/regrade's OUT, or a
 // Gradescope export unzipped), or the students' results files themselves (NAME.json). Writes
-// DIR/class.html and DIR/mistakes.csv (DIR: FOLDER by default), each whole or not at all.
+// DIR/class.html and DIR/mistakes.csv (DIR: FOLDER by default), each whole or not at all. A FOLDER
+// that cannot be read or holds no results (a Gradescope export not regraded yet) writes nothing:
+// it says so on stderr and exits 1.
 #include <cstdio>
 #include <exception>
 #include <fstream>

@@ -109,6 +109,9 @@ std::vector<std::string> attention(const ClassStudent& s) {
   if (s.unprotected) why.push_back("UNPROTECTED: graded without the whole sandbox");
   const auto interrupted = std::count_if(s.tests.begin(), s.tests.end(), [](const ClassTest& t) { return t.interrupted; });
   if (interrupted > 0) why.push_back(std::to_string(interrupted) + " test(s) interrupted: the code crashed, timed out or exited");
+  // Numbers of its results.json the page cannot draw (class_results.hpp): the file was not the
+  // grader's as written, or the grader wrote what it should not have.
+  for (const std::string& refused : s.refused) why.push_back("results.json: " + refused);
   return why;
 }
 

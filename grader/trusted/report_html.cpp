@@ -20,6 +20,13 @@ constexpr double kWidth = 640, kHeight = 240, kLeft = 64, kRight = 16, kTop = 14
 // both onto the axis: beyond this many times that scale, a quantity that is never negative is
 // drawn on a logarithmic axis (from a thousandth of that scale), any other is cut at the top.
 constexpr double kClipFactor = 12.0;
+// A value beyond this (once scaled) is drawn as if it were this, and a logarithmic axis starts
+// at its inverse at the lowest: spans, ratios and steps between any two stay finite, and no
+// graded quantity comes near it (issue 59: 1e306 m shown in mm was infinite and hung the ticks).
+constexpr double kLargestDrawn = 1e100;
+// The labels of an axis, at most: a round step gives at most its count + 1 (9 on the time axis),
+// and a logarithmic axis of more decades labels every few; whatever the range, a tick loop ends.
+constexpr std::size_t kMaxTicks = 12;
 
 // Text for an attribute's value or an element: & < > escaped (student_text.hpp), and quotes.
 std::string text(const std::string& s) {
@@ -68,6 +75,20 @@ double tick_step(double span, int count) {
   return 10.0 * magnitude;
 }
 
+// The multiples of a round step from `lo` to `hi`, about `count` of them and never more than
+// kMaxTicks; none when the step is not a positive number (a span too small or not finite).
+std::vector<double> linear_ticks(double lo, double hi, int count) {
+  std::vector<double> ticks;
+  const double step = tick_step(hi - lo, count);
+  if (!(step > 0.0) || !std::isfinite(step)) return ticks;
+  for (double v = std::ceil(lo / step) * step; v <= hi * (1 + 1e-9) + 1e-300 && ticks.size() < kMaxTicks; v += step)
+    ticks.push_back(v);
+  return ticks;
+}
+
+// v, not NaN, as drawn: within +-kLargestDrawn.
+double drawn(double v) { return std::clamp(v, -kLargestDrawn, kLargestDrawn); }
+
 struct Range {
   double lo = 0.0, hi = 1.0;
   bool clipped = false;  // the student's series goes above hi
@@ -84,25 +105,26 @@ struct Range {
 // scale of the bound and the reference's run when the student's goes far beyond it.
 Range y_range(const RunFigure& f) {
   double lo = 0.0, hi = 0.0, scale = 0.0;
+  // A value not finite (a run that diverged) is a gap; one beyond kLargestDrawn, scaled, is drawn at it.
   const auto see = [&](double v) {
     if (!std::isfinite(v)) return;
-    lo = std::min(lo, v * f.unit_scale);
-    hi = std::max(hi, v * f.unit_scale);
+    lo = std::min(lo, drawn(v * f.unit_scale));
+    hi = std::max(hi, drawn(v * f.unit_scale));
   };
   for (const double v : f.student.v) see(v);
   for (const double v : f.reference.v) {
     see(v);
-    if (std::isfinite(v)) scale = std::max(scale, std::abs(v * f.unit_scale));
+    if (std::isfinite(v)) scale = std::max(scale, std::abs(drawn(v * f.unit_scale)));
   }
   if (std::isfinite(f.bound)) {
     see(f.bound);
-    scale = std::max(scale, std::abs(f.bound * f.unit_scale));
+    scale = std::max(scale, std::abs(drawn(f.bound * f.unit_scale)));
   }
   Range r{lo, hi, false, false};
   // A bound far below the top of a quantity that is never negative (1b's ratio test: the
   // reference's ratio in the thousands, the bound 10, a student's near 1) would lie on the axis:
   // a logarithmic axis from a thousandth of the bound keeps the bound and both runs readable.
-  const double bound = std::isfinite(f.bound) ? f.bound * f.unit_scale : 0.0;
+  const double bound = std::isfinite(f.bound) ? drawn(f.bound * f.unit_scale) : 0.0;
   if (lo >= 0.0 && bound > 0.0 && hi > 100.0 * bound) {
     r.log = true;
     r.lo = std::pow(10.0, std::floor(std::log10(bound / 1000.0)));
@@ -116,6 +138,10 @@ Range y_range(const RunFigure& f) {
       r.hi = kClipFactor * scale, r.clipped = true;
     }
   }
+  // From a bound or scale of a denormal number a thousandth is 0; up from a googol, a power of
+  // ten past kLargestDrawn: both axes kept within it.
+  if (r.log) r.lo = std::max(r.lo, 1.0 / kLargestDrawn), r.hi = std::min(r.hi, kLargestDrawn);
+  if (r.log && r.hi <= r.lo) r.hi = 10.0 * r.lo;
   if (r.hi - r.lo <= 0.0) r.hi = r.lo + 1.0;
   return r;
 }
@@ -127,6 +153,10 @@ struct Box {
   double h() const { return height - top - bottom; }
 };
 
+// The horizontal position of time t in `box` (px): t_end at the right, a time beyond the run (a
+// results.json's, to the class page) within a width of the box on either side.
+double x_at(double t, double t_end, const Box& box) { return box.left + box.w() * std::clamp(t / t_end, -1.0, 2.0); }
+
 // The points of `s` in the plot's pixels, values clipped to the range; `precision` decimals.
 std::string points(const Series& s, double scale, double t_end, const Range& y, const Box& box = {}, int precision = 1) {
   std::ostringstream out;
@@ -134,8 +164,8 @@ std::string points(const Series& s, double scale, double t_end, const Range& y, 
   out.precision(precision);
   bool first = true;
   for (std::size_t k = 0; k < s.t.size() && k < s.v.size(); ++k) {
-    if (!std::isfinite(s.v[k])) continue;
-    out << (first ? "" : " ") << box.left + box.w() * s.t[k] / t_end << "," << box.top + box.h() * (1.0 - y.at(s.v[k] * scale));
+    if (!std::isfinite(s.v[k]) || !std::isfinite(s.t[k])) continue;
+    out << (first ? "" : " ") << x_at(s.t[k], t_end, box) << "," << box.top + box.h() * (1.0 - y.at(s.v[k] * scale));
     first = false;
   }
   return out.str();
@@ -148,8 +178,8 @@ std::string path_data(const Series& s, double scale, double t_end, const Range& 
   std::string out;
   long x0 = 0, y0 = 0;
   for (std::size_t k = 0; k < s.t.size() && k < s.v.size(); ++k) {
-    if (!std::isfinite(s.v[k])) continue;
-    const long x = std::lround(box.left + box.w() * s.t[k] / t_end);
+    if (!std::isfinite(s.v[k]) || !std::isfinite(s.t[k])) continue;
+    const long x = std::lround(x_at(s.t[k], t_end, box));
     const long yy = std::lround(box.top + box.h() * (1.0 - y.at(s.v[k] * scale)));
     if (out.empty()) out = "M" + std::to_string(x) + " " + std::to_string(yy) + "l";
     else if (x != x0 || yy != y0) out += std::to_string(x - x0) + " " + std::to_string(yy - y0) + " ";
@@ -159,23 +189,29 @@ std::string path_data(const Series& s, double scale, double t_end, const Range& 
   return out;
 }
 
+// The last time of either run (s): 1 when none is a positive number, at most kLargestDrawn.
 double end_time(const RunFigure& f) {
   double t_end = 0.0;
   for (const Series* s : {&f.student, &f.reference})
-    if (!s->t.empty()) t_end = std::max(t_end, s->t.back());
-  return t_end > 0.0 ? t_end : 1.0;
+    if (!s->t.empty() && std::isfinite(s->t.back())) t_end = std::max(t_end, s->t.back());
+  return t_end > 0.0 ? std::min(t_end, kLargestDrawn) : 1.0;
+}
+
+// Where the check starts reading the run, within it (0 when not a number).
+double judged_from(const RunFigure& f, double t_end) {
+  return std::isfinite(f.judged_from) ? std::clamp(f.judged_from, 0.0, t_end) : 0.0;
 }
 
 // The values labelled on the y axis of `y`: its powers of ten (logarithmic), else about five
 // round steps. The page's SVG and results.json's PNG label the same ones.
+// Of more decades than kMaxTicks, every few of them, so many that kMaxTicks hold the axis.
 std::vector<double> y_ticks(const Range& y) {
+  if (!y.log) return linear_ticks(y.lo, y.hi, 5);
   std::vector<double> ticks;
-  if (y.log) {
-    for (double v = y.lo; v <= y.hi * (1 + 1e-9); v *= 10.0) ticks.push_back(v);
-  } else {
-    const double dv = tick_step(y.hi - y.lo, 5);
-    for (double v = std::ceil(y.lo / dv) * dv; v <= y.hi * (1 + 1e-9) + 1e-300; v += dv) ticks.push_back(v);
-  }
+  const double decades = std::round(std::log10(y.hi / y.lo));
+  const double every = std::max(1.0, std::ceil(decades / static_cast<double>(kMaxTicks - 1)));
+  const double factor = std::pow(10.0, every);
+  for (double v = y.lo; v <= y.hi * (1 + 1e-9) && ticks.size() < kMaxTicks; v *= factor) ticks.push_back(v);
   return ticks;
 }
 
@@ -185,8 +221,7 @@ void axes(std::ostream& out, double t_end, const Range& y, const std::string& un
   const auto py = [&](double v) { return box.top + h * (1.0 - y.at(v)); };
   out << "<rect x=\"" << box.left << "\" y=\"" << box.top << "\" width=\"" << w << "\" height=\"" << h
       << "\" fill=\"none\" stroke=\"#888\"/>\n";
-  const double dt = tick_step(t_end, t_ticks);
-  for (double t = 0.0; t <= t_end * (1 + 1e-9); t += dt)
+  for (const double t : linear_ticks(0.0, t_end, t_ticks))
     out << "<text x=\"" << px(t) << "\" y=\"" << box.height - box.bottom + 16 << "\" text-anchor=\"middle\">" << num(t, 4)
         << "</text>\n";
   out << "<text x=\"" << box.left + w / 2 << "\" y=\"" << box.height - 4 << "\" text-anchor=\"middle\">t (s)</text>\n";
@@ -205,9 +240,9 @@ void plot_open(std::ostream& out, const RunFigure& f, const Range& y, double t_e
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << box.width << "\" height=\"" << box.height
       << "\" viewBox=\"0 0 " << box.width << " " << box.height << "\" font-family=\"sans-serif\" font-size=\"" << font_size
       << "\" role=\"img\">\n";
-  if (f.judged_from > 0.0)
+  if (judged_from(f, t_end) > 0.0)
     out << "<rect class=\"unjudged\" x=\"" << box.left << "\" y=\"" << box.top << "\" width=\""
-        << box.w() * std::min(f.judged_from, t_end) / t_end << "\" height=\"" << box.h() << "\" fill=\"#f2f2f2\"/>\n";
+        << box.w() * judged_from(f, t_end) / t_end << "\" height=\"" << box.h() << "\" fill=\"#f2f2f2\"/>\n";
   axes(out, t_end, y, f.unit, box, t_ticks);
 }
 
@@ -264,12 +299,11 @@ std::string png_plot(const RunFigure& f) {
            {0xffffff, 0xf2f2f2, 0xe6e6e6, 0x888888, 0xd62728, 0x1f77b4, 0x2ca02c, 0x222222});
   const double t_end = end_time(f);
   const Range y = y_range(f);
-  const double w = kWidth - kLeft - kRight, h = kHeight - kTop - kBottom;
-  const auto px = [&](double t) { return kLeft + w * t / t_end; };
+  const double h = kHeight - kTop - kBottom;
+  const auto px = [&](double t) { return x_at(t, t_end, Box{}); };
   const auto py = [&](double v) { return kTop + h * (1.0 - y.at(v)); };
-  if (f.judged_from > 0.0) r.rect(kLeft, kTop, px(std::min(f.judged_from, t_end)), kTop + h, kShade);
-  const double dt = tick_step(t_end, 8);
-  for (double t = 0.0; t <= t_end * (1 + 1e-9); t += dt) r.number(num(t, 4), px(t) - 3.0 * num(t, 4).size(), kHeight - kBottom + 12, kInk);
+  if (judged_from(f, t_end) > 0.0) r.rect(kLeft, kTop, px(judged_from(f, t_end)), kTop + h, kShade);
+  for (const double t : linear_ticks(0.0, t_end, 8)) r.number(num(t, 4), px(t) - 3.0 * num(t, 4).size(), kHeight - kBottom + 12, kInk);
   for (const double v : y_ticks(y)) {
     r.line(kLeft, py(v), kWidth - kRight, py(v), kGrid);
     r.number(num(v, 4), kLeft - 6, py(v), kInk, true);
@@ -407,8 +441,16 @@ void test_block(std::ostream& out, const ProblemResult& p, const TestResult& r, 
   const std::string st = status(r);
   out << "<section class=\"test " << (st == "PASS" ? "pass" : "fail") << "\" data-test=\""
       << text(p.problem->key + " " + r.test->title) << "\" data-status=\"" << st << "\" data-simulated=\""
-      << (r.test->replay.empty() ? 0 : 1) << "\">\n<h3><span class=\"status\">" << st << "</span> "
+      << (r.test->replay.empty() ? 0 : 1) << "\" data-not-written=\"" << (r.not_written ? 1 : 0) << "\">\n<h3><span class=\"status\">" << st << "</span> "
       << format_points(r.score) << "/" << format_points(r.test->points) << " " << text(r.test->title) << "</h3>\n";
+  if (r.not_written) {
+    // One line, as in the text report and on Gradescope: the judged values, the hint, the replay
+    // and the plots would only describe the stub (the stubs' 41 tests drew 19 plots).
+    out << "<p class=\"not-written\">" << text(r.findings.back()) << "</p>\n";
+    if (!r.printed.empty()) out << "<p>your code printed:</p>\n<pre class=\"printed\">" << text(r.printed) << "</pre>\n";
+    out << "</section>\n";
+    return;
+  }
   if (!r.judged.empty()) {
     out << "<ul class=\"judged\">\n";
     for (const std::string& j : r.judged) out << "<li>judged: " << text(j) << "</li>\n";

@@ -43,10 +43,10 @@ if(stale)
   return()
 endif()
 
-# With WORK: also results.json and the report's page (issue 41), every simulated test failed
-# with its figure: results.json valid, under 1 MB and escaped (check_results_page.cmake), and
-# the page holding a figure for each failed simulated test. Seen to fail: with a grader whose
-# page had its figures cut out ("15 failed simulated tests, 0 of them with a figure").
+# With WORK: also results.json and the report's page (issue 41): results.json valid, under 1 MB
+# and escaped (check_results_page.cmake), and on both each test not written yet in one line,
+# without a plot (issue 58). Seen to fail: on the page of the grader before issue 58's last item,
+# which drew a figure for each failed simulated test of the stubs.
 set(outputs "")
 if(WORK)
   file(REMOVE_RECURSE "${WORK}")
@@ -93,19 +93,24 @@ if(WORK)
   endforeach()
   message("ok   the stubs' results.json: each of the ${count} tests is one line, 'not written yet', without a plot")
   file(READ "${WORK}/report.html" page)
-  # Each section of a failed simulated test, and those of them holding a figure: as many. The
-  # page's lines joined, each section then starts a line of its own (and no ; splits a match
-  # into two items of a CMake list).
+  # The page too: each failed simulated test's section, not written yet, is its status and one
+  # line, without a figure (before, the stubs' page drew a plot for each of them). The page's
+  # lines joined, each section then starts a line of its own (and no ; splits a match into two
+  # items of a CMake list).
   string(REPLACE ";" "," page "${page}")
   string(REPLACE "\n" " " page "${page}")
   string(REPLACE "<section " "\n" page "${page}")
-  string(REGEX MATCHALL "\nclass=\"test fail\"[^\n>]*data-simulated=\"1\">" failed "${page}")
-  string(REGEX MATCHALL "\nclass=\"test fail\"[^\n>]*data-simulated=\"1\">[^\n]*<figure class=\"run\"" shown "${page}")
+  string(REGEX MATCHALL "\nclass=\"test fail\"[^\n>]*data-simulated=\"1\"[^\n>]*>" failed "${page}")
+  string(REGEX MATCHALL "\nclass=\"test fail\"[^\n>]*data-simulated=\"1\"[^\n>]*>[^\n]*<figure " drawn "${page}")
+  string(REGEX MATCHALL "\nclass=\"test fail\"[^\n>]*data-simulated=\"1\" data-not-written=\"1\"> <h3>[^\n]*</h3> <p class=\"not-written\">not written yet: [^<]*</p> </section>"
+         one_line "${page}")
   list(LENGTH failed failed_count)
-  list(LENGTH shown shown_count)
-  if(failed_count EQUAL 0 OR NOT shown_count EQUAL failed_count)
-    message(FATAL_ERROR "the stubs' page: ${failed_count} failed simulated tests, ${shown_count} of them with a figure")
+  list(LENGTH drawn drawn_count)
+  list(LENGTH one_line one_line_count)
+  if(failed_count EQUAL 0 OR NOT drawn_count EQUAL 0 OR NOT one_line_count EQUAL failed_count)
+    message(FATAL_ERROR "the stubs' page: ${failed_count} failed simulated tests, ${drawn_count} of them with a figure, "
+                        "${one_line_count} saying 'not written yet' in one line alone")
   endif()
-  message("ok   the stubs' page: each of the ${failed_count} failed simulated tests has its figure")
+  message("ok   the stubs' page: each of the ${failed_count} failed simulated tests says 'not written yet' in one line, without a figure")
 endif()
 message("the untouched stubs score 0")
