@@ -1,6 +1,7 @@
 cmake_minimum_required(VERSION 3.22)
 # Completes Gradescope's results.json after the grader: puts the submission's notes
-# (collect_submission.sh) at the top of its "output". When the grader wrote no valid
+# (collect_submission.sh) at the top of its "output", and the files they say are missing or
+# misnamed in extra_data.submission (for the class page). When the grader wrote no valid
 # results.json (it could not run), writes one that says so, with a score of 0, so that
 # Gradescope always has a results file. CMake is used because it is already there (the
 # build needs it) and parses JSON.
@@ -32,8 +33,25 @@ endfunction()
 set(notes "")
 if(DEFINED NOTES AND EXISTS "${NOTES}")
   file(READ "${NOTES}" notes)
-  html_escape("${notes}" notes)
 endif()
+# extra_data.submission: the exercise files missing (or symbolic links) and the files named
+# otherwise, from the notes' own sentences (collect_submission.sh), for the class page's "Look
+# at these first" (grader/trusted/class_results.hpp). Names as the notes show them, HTML-escaped.
+set(missing "")
+string(REGEX MATCHALL "\np[0-9a-z]+\\.cpp( is missing from your submission|: '[^\n]*' is a symbolic link)" found "\n${notes}")
+foreach(line IN LISTS found)
+  string(REGEX MATCH "p[0-9a-z]+\\.cpp" file "${line}")
+  string(APPEND missing ", \"${file}\"")
+endforeach()
+set(misnamed "")
+if(notes MATCHES "(^|\n)Not graded, the name is not one the grader reads: ([^\n]*) \\(the grader reads only")
+  html_escape("${CMAKE_MATCH_2}" names)
+  json_string("${names}" names)
+  set(misnamed "${names}")
+endif()
+string(REGEX REPLACE "^, " "" missing "${missing}")
+set(submission "{\"missing\": [${missing}], \"misnamed\": [${misnamed}]}")
+html_escape("${notes}" notes)
 html_escape("${REASON}" REASON)
 
 set(valid OFF)
@@ -56,6 +74,11 @@ if(valid)
   endif()
   json_string("About your submission:\n${notes}\n${output}" value)
   string(JSON json SET "${json}" output "${value}")
+  string(JSON extra ERROR_VARIABLE no_extra TYPE "${json}" extra_data)
+  if(no_extra OR NOT extra STREQUAL "OBJECT")
+    string(JSON json SET "${json}" extra_data "{}")
+  endif()
+  string(JSON json SET "${json}" extra_data submission "${submission}")
   string(JSON json SET "${json}" output_format "\"text\"")
 else()
   if(NOT DEFINED REASON OR REASON STREQUAL "")
@@ -64,7 +87,7 @@ else()
   json_string("${notes}\nThe autograder could not grade this submission: ${REASON}.\nThis is not your fault if your files are named as asked: tell your instructor." value)
   # extra_data.not_graded: why, for the class page (grader/trusted/class_results.hpp).
   json_string("${REASON}" reason)
-  set(json "{\"score\": 0, \"output\": ${value}, \"output_format\": \"text\", \"visibility\": \"visible\", \"extra_data\": {\"not_graded\": ${reason}}, \"tests\": []}")
+  set(json "{\"score\": 0, \"output\": ${value}, \"output_format\": \"text\", \"visibility\": \"visible\", \"extra_data\": {\"not_graded\": ${reason}, \"submission\": ${submission}}, \"tests\": []}")
 endif()
 file(WRITE "${JSON}.tmp" "${json}\n")
 file(RENAME "${JSON}.tmp" "${JSON}")

@@ -107,7 +107,27 @@ std::vector<std::string> attention(const ClassStudent& s) {
   if (!s.not_graded.empty()) why.push_back("not graded: " + s.not_graded);
   if (s.grader_faults > 0) why.push_back(std::to_string(s.grader_faults) + " test(s) or problem(s) lost to the grader's own faults");
   if (s.unprotected) why.push_back("UNPROTECTED: graded without the whole sandbox");
-  const auto interrupted = std::count_if(s.tests.begin(), s.tests.end(), [](const ClassTest& t) { return t.interrupted; });
+  const auto joined = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
+  };
+  // A missing file matters where its problem was graded (a regrade of one problem, --problem,
+  // leaves the others' stubs ungraded).
+  std::vector<std::string> missing;
+  for (const std::string& file : s.missing) {
+    const std::string key = file.size() > 5 ? file.substr(1, file.size() - 5) : file;
+    if (s.tests.empty() || std::any_of(s.tests.begin(), s.tests.end(), [&](const ClassTest& t) { return t.problem == key; }))
+      missing.push_back(file);
+  }
+  if (!missing.empty()) why.push_back("missing, graded as the stub: " + joined(missing));
+  if (!s.misnamed.empty()) why.push_back("misnamed, not graded: " + joined(s.misnamed));
+  // A file that did not compile interrupts every test of its problem: said once, by problem.
+  std::vector<std::string> not_built;
+  for (const ClassTest& t : s.tests)
+    if (t.not_built && std::find(not_built.begin(), not_built.end(), t.problem) == not_built.end()) not_built.push_back(t.problem);
+  if (!not_built.empty()) why.push_back("did not compile: problem " + joined(not_built));
+  const auto interrupted = std::count_if(s.tests.begin(), s.tests.end(), [](const ClassTest& t) { return t.interrupted && !t.not_built; });
   if (interrupted > 0) why.push_back(std::to_string(interrupted) + " test(s) interrupted: the code crashed, timed out or exited");
   // Numbers of its results.json the page cannot draw (class_results.hpp): the file was not the
   // grader's as written, or the grader wrote what it should not have.
@@ -133,7 +153,9 @@ void attention_section(std::ostream& out, const std::vector<ClassStudent>& stude
     table += "</td></tr>\n";
     rows.push_back(Json{{"student", i + 1}, {"why", why}});
   }
-  if (table.empty()) out << "<p>None: every student was graded whole, in the sandbox, by a grader that did not fault.</p>\n";
+  if (table.empty())
+    out << "<p>None: every student's files were there, named as asked, compiled and ran whole, in the sandbox, "
+           "by a grader that did not fault.</p>\n";
   else out << "<table>\n<tr><th>student</th><th>why</th></tr>\n" << table << "</table>\n";
   out << "</section>\n";
   data["attention"] = std::move(rows);

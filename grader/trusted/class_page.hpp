@@ -2,7 +2,7 @@
 /// The class page (scripts/regrade writes OUT/class.html; hw2-class builds it from any folder
 /// of results.json files): one offline file, no script, no request. At the top the students
 /// whose grading needs a look (not graded, the grader's own faults, graded without the sandbox,
-/// tests interrupted); then the known mistakes ranked by how many students made them, each with
+/// a file missing or misnamed, a file that did not compile, tests interrupted); then the known mistakes ranked by how many students made them, each with
 /// its students and the tests it cost; per judged run of each simulated test, small multiples:
 /// every student's run over the reference's with the bound, one plot per named mistake in its
 /// colour; per problem the scores' distribution and each test's pass rate; every student's

@@ -60,6 +60,9 @@ Json class_record(const ProblemResult& problem, const TestResult& test) {
               {"mistake", test.mistake},
               {"interrupted", test.interrupted},
               {"grader_fault", test.grader_fault},
+              // Its problem's file did not compile (every test then "interrupted"): the class
+              // page tells the two apart.
+              {"not_built", !problem.failure.empty() && !problem.grader_fault},
               {"runs", std::move(runs)}};
 }
 

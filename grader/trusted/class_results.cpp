@@ -131,6 +131,7 @@ ClassTest test(const Json& j, Refusals& refused) {
   if (extra.is_object() && extra.contains("problem")) {
     t.problem = string(extra, "problem"), t.name = string(extra, "test"), t.mistake = string(extra, "mistake");
     t.interrupted = flag(extra, "interrupted"), t.grader_fault = flag(extra, "grader_fault");
+    t.not_built = flag(extra, "not_built");
     t.score = score(j, "score", t.problem + " " + t.name, refused), t.max_score = score(j, "max_score", t.problem + " " + t.name, refused);
     if (extra.contains("runs") && extra["runs"].is_array())
       for (const Json& r : extra["runs"]) {
@@ -189,6 +190,13 @@ ClassStudent read_student(const std::string& name, const std::string& text) {
       else refused.note("its count of the grader's faults " + shown(faults) + " refused (not from 0 to a million)");
       s.unprotected = flag(grader, "unprotected");
     }
+    // The files' notes (deploy/results.cmake): names, at most a few dozen of a bounded length.
+    const Json files = extra.value("submission", Json::object());
+    if (files.is_object())
+      for (auto [key, into] : {std::pair<const char*, std::vector<std::string>*>{"missing", &s.missing}, {"misnamed", &s.misnamed}})
+        if (files.contains(key) && files[key].is_array())
+          for (const Json& file : files[key])
+            if (file.is_string() && into->size() < 40) into->push_back(unescaped(file.get<std::string>()).substr(0, 200));
   }
   if (j.contains("tests") && j["tests"].is_array())
     for (const Json& t : j["tests"])

@@ -48,6 +48,7 @@ struct ClassTest {
   std::string mistake;  ///< the known mistake the grader named for it, if any
   double score = 0.0, max_score = 0.0;
   bool interrupted = false, grader_fault = false;
+  bool not_built = false;  ///< its problem's file did not compile (the test is interrupted too)
   std::vector<ClassRun> runs;
   bool passed() const { return score >= max_score; }
 };
@@ -61,6 +62,9 @@ struct ClassStudent {
   bool unprotected = false;
   std::string not_graded;  ///< why the grading gave no tests ("" when it did)
   std::vector<std::string> refused;  ///< what of its results.json the page refused, each noted once
+  /// The exercise files missing from the submission (graded as the stubs), and those named
+  /// otherwise, as collect_submission.sh noted them (results.json's extra_data.submission).
+  std::vector<std::string> missing, misnamed;
   std::vector<ClassTest> tests;
 };
 
