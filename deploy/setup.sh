@@ -39,9 +39,10 @@ fi
 # shellcheck source=/dev/null
 source "$REPO/scripts/setup.sh"
 packages=(libtinyxml-dev util-linux)
-# Not the benchmarks' library, nor the live lab's server (the bundle grades; it serves no page).
+# Not the benchmarks' library, nor the live lab's server, nor yaml-cpp (an export's metadata is read by
+# scripts/regrade, never by the bundle): the bundle grades one submission; it serves no page.
 for p in "${OPSPACE_PACKAGES[@]}"; do
-  case "$p" in libbenchmark-dev | libcpp-httplib-dev) ;; *) packages+=("$p") ;; esac
+  case "$p" in libbenchmark-dev | libcpp-httplib-dev | libyaml-cpp-dev) ;; *) packages+=("$p") ;; esac
 done
 mapfile -t missing < <(opspace_missing "${packages[@]}")
 if [ ${#missing[@]} -gt 0 ]; then
