@@ -107,11 +107,7 @@ std::string feedback(const TestResult& r, std::uint64_t seed = 0) {
 // A figure for Gradescope: its caption as text and its plot as a PNG in a data: URI, the form
 // Gradescope's sanitized HTML keeps (docs/grader.md).
 std::string figure_html(const RunFigure& f) {
-  std::string caption = f.quantity + (f.unit.empty() ? "" : " (" + f.unit + ")") +
-                        ": your run in red, the reference's in blue";
-  if (std::isfinite(f.bound)) caption += ", the bound dashed green";
-  if (f.judged_from > 0.0) caption += "; the shaded start is not judged";
-  caption += ". Judged: " + f.judged + ".";
+  const std::string caption = figure_caption(f);
   std::string alt;  // an attribute's value: its quotes escaped too
   for (const char c : html_escape(f.quantity)) alt += c == '"' ? std::string("&quot;") : std::string(1, c);
   return "<p>" + html_escape(caption) + "</p>\n<img alt=\"" + alt +
@@ -123,17 +119,8 @@ std::string figure_html(const RunFigure& f) {
 // out). Only <pre>, <p> and <img> with alt and a data:image/png source: what the strictest
 // sanitizer documented for Gradescope's Rails keeps (docs/grader.md).
 std::string feedback_html(const TestResult& r, std::uint64_t seed) {
-  std::string text;
-  for (const std::string& j : r.judged) text += "judged: " + j + "\n";
-  for (const std::string& f : r.findings) text += "- " + f + "\n";
-  const bool failed = r.score < r.test->points;
-  if (failed && !r.interrupted && !r.diagnosed && !r.hint_replaced) text += "hint: " + r.test->hint + "\n";
-  const std::string replay = failed && seed != 0 ? replay_command(*r.test, seed) : "";
-  if (!replay.empty()) text += "replay it on your machine: " + replay + "\n";
-  if (!r.printed.empty()) text += "your code printed:\n" + quote_block(r.printed, "");
-  if (failed) text += entry_grid(r.table);
-  std::string out = "<pre>" + html_escape(text) + "</pre>\n";
-  if (!failed) return out;
+  std::string out = "<pre>" + html_escape(feedback_beside_pictures(r, seed)) + "</pre>\n";
+  if (r.score >= r.test->points) return out;
   for (const RunFigure& f : r.figures) out += figure_html(f);
   return out;
 }
@@ -151,6 +138,28 @@ std::string shown_when(const std::string& hidden_as) {
 }
 
 }  // namespace
+
+std::string feedback_beside_pictures(const TestResult& r, std::uint64_t seed) {
+  if (r.not_written) return not_written(r);
+  std::string text;
+  for (const std::string& j : r.judged) text += "judged: " + j + "\n";
+  for (const std::string& f : r.findings) text += "- " + f + "\n";
+  const bool failed = r.score < r.test->points;
+  if (failed && !r.interrupted && !r.diagnosed && !r.hint_replaced) text += "hint: " + r.test->hint + "\n";
+  const std::string replay = failed && seed != 0 ? replay_command(*r.test, seed) : "";
+  if (!replay.empty()) text += "replay it on your machine: " + replay + "\n";
+  if (!r.printed.empty()) text += "your code printed:\n" + quote_block(r.printed, "");
+  if (failed) text += entry_grid(r.table);
+  return text;
+}
+
+std::string figure_caption(const RunFigure& f) {
+  std::string caption = f.quantity + (f.unit.empty() ? "" : " (" + f.unit + ")") +
+                        ": your run in red, the reference's in blue";
+  if (std::isfinite(f.bound)) caption += ", the bound dashed green";
+  if (f.judged_from > 0.0) caption += "; the shaded start is not judged";
+  return caption + ". Judged: " + f.judged + ".";
+}
 
 // Counted from the faults typed where they happened (fault.hpp), never from a text: a failure
 // the submission caused may read like the grader's, and only the grader's buy a second grading.

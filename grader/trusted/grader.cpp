@@ -396,7 +396,7 @@ void print_footer(const GraderOptions& options, const Grades& grades, double bui
   std::fflush(stdout);
 }
 
-// The files the options ask for: results.json (--gradescope), JUnit XML (--junit), the report's
+// The files the options ask for: results.json (--gradescope, --prairielearn), JUnit XML (--junit), the report's
 // page (--html). False if one could not be written.
 bool write_results_files(const GraderOptions& options, const std::vector<ProblemResult>& results, double seconds,
                          bool unprotected) {
@@ -408,6 +408,11 @@ bool write_results_files(const GraderOptions& options, const std::vector<Problem
                                              {options.hidden, options.hidden_as, options.seed, options.gradescope_format,
                                               unprotected});
                           });
+  }
+  if (!options.prairielearn_path.empty()) {
+    written &= write_file(options.prairielearn_path, "PrairieLearn's results.json", [&](std::ostream& out) {
+      write_prairielearn(out, results, seconds, {options.hidden, options.seed});
+    });
   }
   if (!options.junit_path.empty()) {
     written &= write_file(options.junit_path, "JUnit XML", [&](std::ostream& out) { write_junit(out, results, seconds); });

@@ -5,6 +5,7 @@
 /// loads or runs a student's code in its own process.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <iosfwd>
 #include <map>
@@ -23,6 +24,7 @@ struct GraderOptions {
   double timeout = 30.0;            ///< seconds per test for every request to the runner
   std::map<std::string, double> problem_timeout;  ///< a problem's own limit (--timeout KEY=SECONDS)
   std::string gradescope_path;      ///< results.json, if not empty
+  std::string prairielearn_path;    ///< PrairieLearn's results.json (--prairielearn), if not empty
   std::string junit_path;           ///< JUnit XML, if not empty
   std::string html_path;            ///< the report as a page (report_html.hpp), if not empty
   std::vector<std::string> hidden;  ///< tests whose name contains one of these are hidden
@@ -76,6 +78,32 @@ struct GradescopeSettings {
 /// "visible"); every text HTML-escaped. extra_data.grader holds the seed and grader_faults().
 void write_gradescope(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds,
                       const GradescopeSettings& settings);
+
+/// What PrairieLearn's results.json hides, and the run's seed.
+struct PrairieLearnSettings {
+  std::vector<std::string> hidden;  ///< tests whose "<key> <name>" contains one of these: left out
+  std::uint64_t seed = 0;           ///< the run's seed, for each failed simulated test's replay
+};
+
+/// PrairieLearn's external grader's results.json (its external grading guide): gradable true,
+/// score the whole grade in [0, 1] (hidden tests included), message (one line per problem,
+/// counting the tests shown), and tests[] with name, description, points, max_points, message,
+/// output and images[] (each failed simulated test's plots as data:image/png URLs); the hidden
+/// tests left out. Kept under kPrairieLearnLimit bytes: pictures are dropped, last first, then
+/// outputs cut, each with a note in message.
+void write_prairielearn(std::ostream& out, const std::vector<ProblemResult>& problems, double seconds,
+                        const PrairieLearnSettings& settings);
+
+/// PrairieLearn's bound on results.json: 1 MB. A decimal megabyte, the smaller reading.
+constexpr std::size_t kPrairieLearnLimit = 1000 * 1000;
+
+/// A test's feedback as text for a page that shows its pictures beside it: the judged values,
+/// findings, hint, replay command, prints and wrong matrix's grid, without the runs' tables (a
+/// test not written yet: its one line). Gradescope's html output and PrairieLearn's share it.
+std::string feedback_beside_pictures(const TestResult& r, std::uint64_t seed);
+
+/// A figure's caption: the quantity, its unit, which run is which colour, and what is judged.
+std::string figure_caption(const RunFigure& f);
 
 /// The tests and problems lost to the grader's own failures (a program it could not start, a
 /// runner it could not build), never to the student's code: scripts/regrade grades those again.

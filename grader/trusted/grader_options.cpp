@@ -60,8 +60,8 @@ bool parse_mib(const std::string& text, unsigned long long& mib, const std::stri
 
 int grader_usage(std::ostream& out, const char* program, double default_timeout, int code) {
   out << "usage: " << program << " [--problem KEY] [--exercises DIR] [--timeout [KEY=]SECONDS]... [--seed N]\n"
-      << "          [--gradescope FILE] [--junit FILE] [--html FILE] [--hidden TEXT]... [--sandbox-user NAME]\n"
-      << "          [--unprotected] [--hidden-visibility WHEN] [--gradescope-format FORMAT] [--no-isolation]\n"
+      << "          [--gradescope FILE] [--prairielearn FILE] [--junit FILE] [--html FILE] [--hidden TEXT]...\n"
+      << "          [--sandbox-user NAME] [--unprotected] [--hidden-visibility WHEN] [--gradescope-format FORMAT] [--no-isolation]\n"
       << "          [--memory MIB] [--cache DIR] [--cache-limit MIB] [--jobs N] [--one-runner]\n"
       << "  --problem      grade one problem only (";
   bool first = true;
@@ -77,6 +77,8 @@ int grader_usage(std::ostream& out, const char* program, double default_timeout,
       << "  --gradescope   also write Gradescope's results.json to FILE\n"
       << "  --gradescope-format html (default: plots as pictures, matrices as tables) or text\n"
       << "                 (plots as tables of samples): results.json's tests' output_format\n"
+      << "  --prairielearn also write PrairieLearn's results.json to FILE (score in [0, 1], the\n"
+      << "                 failed runs' plots as images; --hidden tests left out, counted in the score)\n"
       << "  --junit        also write JUnit XML to FILE\n"
       << "  --html         also write the report as a page to FILE, with each simulated test's run\n"
       << "                 plotted (scripts/grade: out/grade/report.html)\n"
@@ -153,6 +155,8 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
       options.cache_dir = argv[++i];
     } else if (arg == "--gradescope" && has_value) {
       options.gradescope_path = argv[++i];
+    } else if (arg == "--prairielearn" && has_value) {
+      options.prairielearn_path = argv[++i];
     } else if (arg == "--gradescope-format" && has_value) {
       options.gradescope_format = argv[++i];
       if (options.gradescope_format != "html" && options.gradescope_format != "text") {

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# PrairieLearn's external grader, as it runs a question of problem 1b, without Docker (there is no
+# engine here; the image's recipe, deploy/prairielearn/Dockerfile, is not built by any test): the
+# entrypoint grades a fresh GRADE root (OPSPACE_PL_ROOT, PrairieLearn's /grade) whose student
+# folder holds p1b.cpp, with this build's grader, and each results.json is checked as PrairieLearn
+# reads it (check_prairielearn.cmake: its fields, its size):
+#   the reference -> 1; the untouched stub -> 0; a known mistake (the 1b mutant) -> between,
+#   with its failed runs' plots as images; the file missing, misnamed (P1B.cpp) or a symbolic
+#   link -> not gradable, the format error naming p1b.cpp.
+# Problem 1b alone: a question grades one problem, and 1b has simulated tests (the pictures) yet
+# grades in seconds.
+#   bash tests/deploy/prairielearn.sh REPO WORK GRADER
+set -euo pipefail
+repo=$1 work=$2 grader=$3
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+check="$repo/tests/deploy/check_prairielearn.cmake"
+key=1b
+points=""
+for i in "${!OPSPACE_KEYS[@]}"; do [ "${OPSPACE_KEYS[$i]}" = "$key" ] && points=${OPSPACE_POINTS[$i]}; done
+[ -n "$points" ] || fail "problems.txt has no problem $key"
+fresh_work "$work"
+
+# grade NAME FILE...: a fresh GRADE root with FILEs in student/ (a FILE a:b is a copied as b),
+# graded by the entrypoint; its results.json kept as WORK/NAME.json.
+grade() {
+  local name=$1 root="$work/$1" f
+  shift
+  mkdir -p "$root/student"
+  for f in "$@"; do cp "${f%%:*}" "$root/student/${f##*:}"; done
+  local t0
+  t0=$(date +%s)
+  OPSPACE_PL_ROOT="$root" OPSPACE_PL_GRADER="$grader" bash "$repo/deploy/prairielearn/entrypoint.sh" "$key" \
+    > "$work/$name.log" 2>&1 || { cat "$work/$name.log"; fail "the entrypoint exited non-zero ($name)"; }
+  echo "TIME entrypoint ($name): $(( $(date +%s) - t0 )) s"
+  cp "$root/results/results.json" "$work/$name.json"
+}
+
+grade reference "$repo/solutions/p$key.cpp:p$key.cpp"
+cmake -DJSON="$work/reference.json" -DSCORE=1 -DPOINTS="$points" -P "$check"
+
+stub="$work/stub-p$key.cpp"
+git -C "$repo" show "HEAD:exercises/p$key.cpp" > "$stub"
+grade stub "$stub:p$key.cpp"
+cmake -DJSON="$work/stub.json" -DSCORE=0 -DPOINTS="$points" -P "$check"
+
+grade mistake "$repo/tests/mutants/p1b_part3_pinv.cpp:p$key.cpp"
+cmake -DJSON="$work/mistake.json" -DPOINTS="$points" -DIMAGES=ON -DSCORE=BETWEEN -P "$check"
+
+grade missing
+cmake -DJSON="$work/missing.json" "-DFORMAT_ERROR=p$key\\.cpp is missing" -P "$check"
+grade misnamed "$repo/solutions/p$key.cpp:P1B.cpp"
+cmake -DJSON="$work/misnamed.json" "-DFORMAT_ERROR=p$key\\.cpp is missing.*holds: P1B\\.cpp" -P "$check"
+mkdir -p "$work/link/student"
+ln -s "$repo/solutions/p$key.cpp" "$work/link/student/p$key.cpp"
+grade link
+cmake -DJSON="$work/link.json" "-DFORMAT_ERROR=p$key\\.cpp is a symbolic link" -P "$check"
+echo "the PrairieLearn entrypoint grades the reference 1, the stub 0, a mistake with its plots, and refuses a missing, misnamed or linked file"
