@@ -26,6 +26,7 @@ LIMIT=${OPSPACE_GRADE_LIMIT:-50}
 
 mkdir -p "$RESULTS_DIR"
 rm -f "$RESULTS"
+# shellcheck source=/dev/null
 source "$REPO/scripts/problems.sh"
 keys=("${OPSPACE_KEYS[@]}")
 [ $# -eq 0 ] || keys=("$1")
@@ -68,7 +69,10 @@ for key in "${keys[@]}"; do
     errors+=("$name is a symbolic link: submit the file itself")
   elif [ ! -f "$file" ]; then
     seen=""
-    [ ${#others[@]} -eq 0 ] || seen=" (the submission holds: $(IFS=,; echo "${others[*]}" | sed 's/,/, /g'))"
+    if [ ${#others[@]} -gt 0 ]; then
+      seen=$(printf '%s, ' "${others[@]}")
+      seen=" (the submission holds: ${seen%, })"
+    fi
     errors+=("$name is missing: this question grades a file named exactly $name$seen")
   elif [ "$(stat -c %s "$file")" -gt $((1024 * 1024)) ]; then
     errors+=("$name is larger than 1 MiB: the grader reads no file that large")

@@ -5,6 +5,7 @@ cmake_minimum_required(VERSION 3.22)
 #                    message and output, points within [0, max_points]; the tests' max_points
 #                    add up to -DPOINTS (the problem's, problems.txt: no test left out)
 #   -DIMAGES=ON      at least one test carries images[] of data:image/png;base64 URLs
+#   -DMESSAGE=R      the top-level message matches the regular expression R
 #   -DFORMAT_ERROR=R gradable false, a format error matching the regular expression R
 #
 #   cmake -DJSON=results.json (-DSCORE=1 -DPOINTS=20 | -DFORMAT_ERROR=...) -P check_prairielearn.cmake
@@ -45,6 +46,12 @@ if(SCORE STREQUAL "BETWEEN")
 elseif(NOT score EQUAL SCORE)
   string(JSON message ERROR_VARIABLE ignored GET "${json}" message)
   message(FATAL_ERROR "${JSON}: score ${score}, expected ${SCORE}\n${message}")
+endif()
+if(DEFINED MESSAGE)
+  string(JSON message GET "${json}" message)
+  if(NOT message MATCHES "${MESSAGE}")
+    message(FATAL_ERROR "${JSON}'s message does not match '${MESSAGE}':\n${message}")
+  endif()
 endif()
 string(JSON count LENGTH "${json}" tests)
 if(count EQUAL 0)

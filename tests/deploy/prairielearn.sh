@@ -5,13 +5,15 @@
 # folder holds p1b.cpp, with this build's grader, and each results.json is checked as PrairieLearn
 # reads it (check_prairielearn.cmake: its fields, its size):
 #   the reference -> 1; the untouched stub -> 0; a known mistake (the 1b mutant) -> between,
-#   with its failed runs' plots as images; the file missing, misnamed (P1B.cpp) or a symbolic
+#   with its failed runs' plots as images; a file that does not compile -> 0, the compiler's
+#   error in the message; the file missing, misnamed (P1B.cpp) or a symbolic
 #   link -> not gradable, the format error naming p1b.cpp.
 # Problem 1b alone: a question grades one problem, and 1b has simulated tests (the pictures) yet
 # grades in seconds.
 #   bash tests/deploy/prairielearn.sh REPO WORK GRADER
 set -euo pipefail
 repo=$1 work=$2 grader=$3
+# shellcheck source=/dev/null
 source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
 check="$repo/tests/deploy/check_prairielearn.cmake"
 key=1b
@@ -46,6 +48,10 @@ cmake -DJSON="$work/stub.json" -DSCORE=0 -DPOINTS="$points" -P "$check"
 grade mistake "$repo/tests/mutants/p1b_part3_pinv.cpp:p$key.cpp"
 cmake -DJSON="$work/mistake.json" -DPOINTS="$points" -DIMAGES=ON -DSCORE=BETWEEN -P "$check"
 
+printf 'this is not C++\n' > "$work/broken.cpp"
+grade broken "$work/broken.cpp:p$key.cpp"
+cmake -DJSON="$work/broken.json" -DSCORE=0 -DPOINTS="$points" "-DMESSAGE=p$key\\.cpp:1:" -P "$check"
+
 grade missing
 cmake -DJSON="$work/missing.json" "-DFORMAT_ERROR=p$key\\.cpp is missing" -P "$check"
 grade misnamed "$repo/solutions/p$key.cpp:P1B.cpp"
@@ -54,4 +60,4 @@ mkdir -p "$work/link/student"
 ln -s "$repo/solutions/p$key.cpp" "$work/link/student/p$key.cpp"
 grade link
 cmake -DJSON="$work/link.json" "-DFORMAT_ERROR=p$key\\.cpp is a symbolic link" -P "$check"
-echo "the PrairieLearn entrypoint grades the reference 1, the stub 0, a mistake with its plots, and refuses a missing, misnamed or linked file"
+echo "the PrairieLearn entrypoint grades the reference 1, the stub 0, a mistake with its plots, a broken file 0, and refuses a missing, misnamed or linked file"
