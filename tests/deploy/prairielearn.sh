@@ -15,7 +15,7 @@ set -euo pipefail
 repo=$1 work=$2 grader=$3
 # shellcheck source=/dev/null
 source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
-check="$repo/tests/deploy/check_prairielearn.cmake"
+checker="$repo/tests/deploy/check_prairielearn.cmake"
 key=1b
 points=""
 for i in "${!OPSPACE_KEYS[@]}"; do [ "${OPSPACE_KEYS[$i]}" = "$key" ] && points=${OPSPACE_POINTS[$i]}; done
@@ -37,27 +37,36 @@ grade() {
   cp "$root/results/results.json" "$work/$name.json"
 }
 
+# check NAME ARGS...: WORK/NAME.json checked (check_prairielearn.cmake ARGS); on a failure the
+# entrypoint's own output too, which says what the grader did.
+check() {
+  local name=$1
+  shift
+  cmake -DJSON="$work/$name.json" "$@" -P "$checker" ||
+    { tail -30 "$work/$name.log"; fail "$name: results.json is not what PrairieLearn should get"; }
+}
+
 grade reference "$repo/solutions/p$key.cpp:p$key.cpp"
-cmake -DJSON="$work/reference.json" -DSCORE=1 -DPOINTS="$points" -P "$check"
+check reference -DSCORE=1 -DPOINTS="$points"
 
 stub="$work/stub-p$key.cpp"
 git -C "$repo" show "HEAD:exercises/p$key.cpp" > "$stub"
 grade stub "$stub:p$key.cpp"
-cmake -DJSON="$work/stub.json" -DSCORE=0 -DPOINTS="$points" -P "$check"
+check stub -DSCORE=0 -DPOINTS="$points"
 
 grade mistake "$repo/tests/mutants/p1b_part3_pinv.cpp:p$key.cpp"
-cmake -DJSON="$work/mistake.json" -DPOINTS="$points" -DIMAGES=ON -DSCORE=BETWEEN -P "$check"
+check mistake -DPOINTS="$points" -DIMAGES=ON -DSCORE=BETWEEN
 
 printf 'this is not C++\n' > "$work/broken.cpp"
 grade broken "$work/broken.cpp:p$key.cpp"
-cmake -DJSON="$work/broken.json" -DSCORE=0 -DPOINTS="$points" "-DMESSAGE=p$key\\.cpp:1:" -P "$check"
+check broken -DSCORE=0 -DPOINTS="$points" "-DMESSAGE=p$key\\.cpp:1:"
 
 grade missing
-cmake -DJSON="$work/missing.json" "-DFORMAT_ERROR=p$key\\.cpp is missing" -P "$check"
+check missing "-DFORMAT_ERROR=p$key\\.cpp is missing"
 grade misnamed "$repo/solutions/p$key.cpp:P1B.cpp"
-cmake -DJSON="$work/misnamed.json" "-DFORMAT_ERROR=p$key\\.cpp is missing.*holds: P1B\\.cpp" -P "$check"
+check misnamed "-DFORMAT_ERROR=p$key\\.cpp is missing.*holds: P1B\\.cpp"
 mkdir -p "$work/link/student"
 ln -s "$repo/solutions/p$key.cpp" "$work/link/student/p$key.cpp"
 grade link
-cmake -DJSON="$work/link.json" "-DFORMAT_ERROR=p$key\\.cpp is a symbolic link" -P "$check"
+check link "-DFORMAT_ERROR=p$key\\.cpp is a symbolic link"
 echo "the PrairieLearn entrypoint grades the reference 1, the stub 0, a mistake with its plots, a broken file 0, and refuses a missing, misnamed or linked file"
