@@ -55,7 +55,14 @@ std::string seconds(double s) {
 RunnerProcess::RunnerProcess(RunnerConfig config)
     : config_(std::move(config)), inbox_(sizeof(protocol::Header) + protocol::kMaxPayload) {}
 
-RunnerProcess::~RunnerProcess() { stop(); }
+RunnerProcess::~RunnerProcess() {
+  stop();
+  while (!set_aside_.empty()) {
+    swap_process(set_aside_.back());
+    set_aside_.pop_back();
+    stop();
+  }
+}
 
 void RunnerProcess::begin_test(std::chrono::steady_clock::time_point deadline, double timeout_seconds) {
   deadline_ = deadline + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -125,9 +132,56 @@ void RunnerProcess::start() {
   fcntl(print_fd_, F_SETFL, O_NONBLOCK);
   protections_ = program_.protections;
   cpu_at_begin_ = 0.0;
+  // A process's requests are numbered from 1 whatever came before it: nothing it reads tells it
+  // how many calls other processes of this runner answered.
+  sequence_ = 0;
   running_ = true;
   ++starts_;
   memory_kills_ = grading_memory_kills();
+}
+
+void RunnerProcess::swap_process(Process& other) {
+  std::swap(program_, other.program);
+  std::swap(running_, other.running);
+  std::swap(request_fd_, other.request_fd);
+  std::swap(answer_fd_, other.answer_fd);
+  std::swap(print_fd_, other.print_fd);
+  std::swap(sequence_, other.sequence);
+  std::swap(inbox_, other.inbox);
+  std::swap(inbox_begin_, other.inbox_begin);
+  std::swap(inbox_end_, other.inbox_end);
+  std::swap(deadline_, other.deadline);
+  std::swap(timeout_seconds_, other.timeout_seconds);
+  std::swap(cpu_at_begin_, other.cpu_at_begin);
+  std::swap(memory_kills_, other.memory_kills);
+}
+
+void RunnerProcess::begin_fresh_process() {
+  // What the process set aside has printed so far comes before the fresh one's prints.
+  if (running_ && print_fd_ >= 0) drain_prints(print_fd_);
+  Process fresh;
+  fresh.inbox.resize(inbox_.size());
+  const auto now = std::chrono::steady_clock::now();
+  // The limit of a test's runner (begin_test): the test's limit of CPU time, counted from the
+  // process's start (cpu_at_begin 0), and kWaitFactor times that of waiting.
+  fresh.deadline = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(kWaitFactor * timeout_seconds_));
+  fresh.timeout_seconds = timeout_seconds_;
+  swap_process(fresh);
+  fresh.set_aside = now;
+  set_aside_.push_back(std::move(fresh));
+}
+
+void RunnerProcess::end_fresh_process() {
+  if (set_aside_.empty()) return;
+  if (running_ && print_fd_ >= 0) drain_prints(print_fd_);
+  stop();
+  Process back = std::move(set_aside_.back());
+  set_aside_.pop_back();
+  // The run's time was the run's own: the test's other calls keep the waiting they had left.
+  back.deadline += std::chrono::steady_clock::now() - back.set_aside;
+  swap_process(back);
+  last_cpu_check_ = std::chrono::steady_clock::now();
 }
 
 void RunnerProcess::stop() {

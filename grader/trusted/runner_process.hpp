@@ -86,6 +86,14 @@ class RunnerProcess {
   std::vector<unsigned char> call(protocol::Function function, const std::vector<unsigned char>& arguments,
                                   std::size_t value_size);
 
+  /// Sets the runner's process aside, untouched, and gives the calls that follow a fresh one
+  /// (started on the first call) with the current test's whole limit, until
+  /// end_fresh_process(), which ends it and takes back the one set aside: a simulated run's
+  /// process then knows no call before its own first tick, whichever runner makes the run
+  /// (runs_ahead.hpp). Its prints and failure are the current test's, as any call's.
+  void begin_fresh_process();
+  void end_fresh_process();
+
   /// Kills the runner and everything it started.
   void stop();
   /// The protections of the last start (sandbox.hpp).
@@ -101,11 +109,28 @@ class RunnerProcess {
   void drain_prints(int fd_ready);
   std::string ended_how();
 
+  // One process of the runner and where the current test stands with it: what
+  // begin_fresh_process() sets aside.
+  struct Process {
+    Sandboxed program;
+    bool running = false;
+    int request_fd = -1, answer_fd = -1, print_fd = -1;
+    std::uint32_t sequence = 0;  // its requests' numbers, from 1 in each process
+    std::vector<unsigned char> inbox;
+    std::size_t inbox_begin = 0, inbox_end = 0;
+    std::chrono::steady_clock::time_point deadline;
+    double timeout_seconds = 0.0, cpu_at_begin = 0.0;
+    unsigned long long memory_kills = 0;
+    std::chrono::steady_clock::time_point set_aside;  // when begin_fresh_process() took it
+  };
+  void swap_process(Process& other);
+
   RunnerConfig config_;
   Sandboxed program_;
   bool running_ = false;
   int request_fd_ = -1, answer_fd_ = -1, print_fd_ = -1;
   std::uint32_t sequence_ = 0;
+  std::vector<Process> set_aside_;  // the processes of begin_fresh_process(), innermost last
   // The runner's CPU time in seconds (its threads and the children it reaped), from /proc.
   double cpu_seconds() const;
   std::chrono::steady_clock::time_point deadline_;

@@ -45,6 +45,24 @@ bool fresh(const TestInProgress* test) {
   return test != nullptr && !test->given && (test->runner == nullptr || test->runner->calls_in_test() == 0);
 }
 
+// The calls of a run made in a test go to a fresh process of the test's runner, from the run's
+// first tick to its end, as a run made ahead goes to a second runner started for it: whoever
+// makes a run, its process has answered no call before (issue 58). No call, no process started.
+class FreshProcess {
+ public:
+  explicit FreshProcess(TestInProgress* test) : runner_(test ? test->runner : nullptr) {
+    if (runner_) runner_->begin_fresh_process();
+  }
+  ~FreshProcess() {
+    if (runner_) runner_->end_fresh_process();
+  }
+  FreshProcess(const FreshProcess&) = delete;
+  FreshProcess& operator=(const FreshProcess&) = delete;
+
+ private:
+  RunnerProcess* runner_;
+};
+
 void give(Slot& slot, TestInProgress& test) {
   if (test.recording) *test.recording = std::move(slot.recording);
   if (test.runner) test.runner->take_run(slot.printed, slot.failure, slot.fault);
@@ -82,6 +100,7 @@ const void* shared_run(const RunKey& key, const std::function<std::shared_ptr<co
   lock.unlock();
   std::shared_ptr<const void> run;
   try {
+    const FreshProcess fresh_process(t_test);
     run = make();
   } catch (...) {
     lock.lock();
@@ -143,6 +162,8 @@ void RunsAhead::make_all() {
     Recording recording;
     MakingAhead making{key, nullptr};
     const auto budget = std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(timeout_));
+    // A process of its own for each run, as a run made by a test has (FreshProcess).
+    runner_.stop();
     runner_.begin_test(std::chrono::steady_clock::now() + budget, timeout_);
     t_ahead = &making;
     try {

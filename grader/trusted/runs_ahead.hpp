@@ -5,7 +5,10 @@
 /// (Problem::runs), a second runner of the same binary makes a fixed share of them in a thread,
 /// and each is given to the first test that asks for it, in the tests' order, with what it
 /// recorded (the calls the diagnosis reads, the prints, the runner's failure) as if that test
-/// had made it. The report is that of one runner (docs/grader.md, "A second runner").
+/// had made it. Every run, made ahead or by a test, is made in a process of its own whose first
+/// call is the run's first tick, so that what a process has answered before each call is fixed
+/// by the problem's tests, never by who makes the runs (issue 58). The report is that of one
+/// runner (docs/grader.md, "A second runner").
 #pragma once
 
 #include <cstdint>
@@ -49,7 +52,9 @@ struct ListedRun {
 const void* shared_run(const RunKey& key, const std::function<std::shared_ptr<const void>()>& make);
 
 /// The test being run in this thread on `runner` (null: linked functions), recording its calls
-/// in `recording` (null: none recorded): where a run made ahead is given. run_tests() sets it.
+/// in `recording` (null: none recorded): where a run made ahead is given, and whose runner makes
+/// the runs the test asks for, each in a fresh process (RunnerProcess::begin_fresh_process).
+/// run_tests() sets it.
 class TestInProgress {
  public:
   TestInProgress(RunnerProcess* runner, Recording* recording);

@@ -6,6 +6,9 @@
 //   garbage  16 bytes that are no header, then nothing more
 //   partial  the header and half the payload, then it waits, answering nothing more
 //   exit     reads the request, then ends without answering
+//   history  instead of the echo, what this process has seen: the requests it has read, this
+//            one included, and this request's number, as a 2x2 matrix of doubles (p1a's
+//            mass_matrix: [[calls, 0], [number, 0]]), written whole
 // For test_runner_process.cpp: what the grader makes of an untrusted runner's writes.
 #include <unistd.h>
 
@@ -48,18 +51,23 @@ void write_all(const unsigned char* p, std::size_t size) {
 int main() {
   const char* mode_env = std::getenv("OPSPACE_FAKE_RUNNER");
   const std::string mode = mode_env ? mode_env : "whole";
-  for (;;) {
+  for (double calls = 1;; ++calls) {
     protocol::Header request;
     if (!read_exact(protocol::kRequestFd, &request, sizeof request)) return 0;
     std::vector<unsigned char> arguments(request.size);
     if (!read_exact(protocol::kRequestFd, arguments.data(), arguments.size())) return 3;
     if (mode == "exit") return 0;
+    if (mode == "history") {
+      const double seen[4] = {calls, static_cast<double>(request.sequence), 0.0, 0.0};
+      arguments.assign(reinterpret_cast<const unsigned char*>(seen), reinterpret_cast<const unsigned char*>(seen + 4));
+    }
     const protocol::Header header{protocol::kAnswerMagic, request.sequence,
-                                  static_cast<std::uint32_t>(protocol::Status::kValue), request.size};
+                                  static_cast<std::uint32_t>(protocol::Status::kValue),
+                                  static_cast<std::uint32_t>(arguments.size())};
     std::vector<unsigned char> message(sizeof header + arguments.size());
     std::memcpy(message.data(), &header, sizeof header);
     if (!arguments.empty()) std::memcpy(message.data() + sizeof header, arguments.data(), arguments.size());
-    if (mode == "whole") {
+    if (mode == "whole" || mode == "history") {
       write_all(message.data(), message.size());
     } else if (mode == "split") {
       for (std::size_t at = 0, piece = 1; at < message.size(); at += piece, piece = piece % 5 + 1) {

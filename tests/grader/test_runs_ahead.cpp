@@ -1,13 +1,17 @@
-// The runs a second runner makes ahead (grader/trusted/runs_ahead.hpp), without processes: the
-// functions are none (no run here calls one), so the RunnerProcess standing for the second runner
-// is never started; each run records which thread made it.
+// The runs a second runner makes ahead (grader/trusted/runs_ahead.hpp). First without processes:
+// the functions are none (no run here calls one), so the RunnerProcess standing for the second
+// runner is never started; each run records which thread made it. Then with runners that say
+// what their process has answered (tests/grader/fake_runner.cpp, "history", unsandboxed): the
+// process a run is made in, by a test or ahead.
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <chrono>
 #include <thread>
 
 #include "diagnosis.hpp"
 #include "pinned_run.hpp"
+#include "remote_api.hpp"
 #include "runner_process.hpp"
 #include "runs_ahead.hpp"
 
@@ -39,6 +43,38 @@ Hw2Api api_of(std::uint64_t identity) {
 }
 
 RunnerConfig nowhere() { return RunnerConfig{"/nonexistent/runner", "/nonexistent", Account{}, false, {}, {}}; }
+
+RunnerConfig history() { return RunnerConfig{OPSPACE_FAKE_RUNNER, "/", Account{}, false, {"OPSPACE_FAKE_RUNNER=history"}, {}}; }
+
+// What a call's process had seen, the call included: how many calls it answered, and this
+// call's number (fake_runner's "history", through p1a's mass_matrix).
+struct Seen {
+  double calls = 0, number = 0;
+};
+Seen seen(const Hw2Api& api) {
+  const Eigen::Matrix2d m = api.p1a.mass_matrix(1.0, 2.0);
+  return {m(0, 0), m(1, 0)};
+}
+
+// A run of two ticks that keeps what its first tick's process had seen.
+const PinnedRun<Seen>& history_run(const Hw2Api& api, int variant) {
+  return pinned_run<Seen>(api.identity, variant, 1e-6, [&api](LawPin&) {
+    const Seen first = seen(api);
+    seen(api);
+    return first;
+  });
+}
+
+ListedRun listed_history(int variant) {
+  return {[variant](std::uint64_t identity) { return run_key<Seen>(identity, variant); },
+          [variant](const Hw2Api& api) { history_run(api, variant); }};
+}
+
+constexpr double kLimit = 30.0;  // seconds: far more than a few calls to a local process take
+
+void begin(RunnerProcess& runner) {
+  runner.begin_test(std::chrono::steady_clock::now() + std::chrono::seconds(30), kLimit);
+}
 
 }  // namespace
 
@@ -80,6 +116,53 @@ TEST_CASE("the second runner's share is the list's odd positions, whatever the t
   REQUIRE(share.size() == 2);
   CHECK(share[0].key(7) == run_key<Made>(7, 11));
   CHECK(share[1].key(7) == run_key<Made>(7, 13));
+}
+
+// Issue 58: a runner's process that answered other calls first could answer a run differently
+// (a `static` in the student's code): whoever makes a run, its process answers nothing before
+// the run's first tick. Seen to fail before: the second run's first call was the process's 4th
+// (after the test's own three) and, made ahead, the second runner's 3rd.
+TEST_CASE("a run a test makes is made in a process of its own; the test's runner keeps its process") {
+  RunnerProcess runner(history());
+  const Hw2Api api = remote_api("1a", runner);
+  begin(runner);
+  {
+    TestInProgress test(&runner, nullptr);
+    for (int call = 1; call <= 3; ++call) CHECK(seen(api).calls == call);  // as a law test's
+    for (int variant : {1, 2}) {
+      const Seen first = history_run(api, variant).result;
+      CHECK(first.calls == 1);
+      CHECK(first.number == 1);  // nor does the call's number tell
+    }
+    // The test's own process is the one before the runs, with its own calls only.
+    const Seen after = seen(api);
+    CHECK(after.calls == 4);
+    CHECK(after.number == 4);
+  }
+  runner.end_test();
+  CHECK(runner.failure().empty());
+  CHECK(runner.starts() == 3);
+}
+
+TEST_CASE("a second runner makes each run in a process of its own, as a test would") {
+  RunnerProcess runner(history()), second(history());
+  const Hw2Api api = remote_api("1a", runner);
+  Hw2Api second_api = remote_api("1a", second);
+  second_api.identity = api.identity;
+  {
+    RunsAhead ahead({listed_history(1), listed_history(2)}, second_api, second, kLimit);
+    for (int variant : {1, 2}) {
+      begin(runner);
+      TestInProgress test(&runner, nullptr);
+      const Seen first = history_run(api, variant).result;
+      CHECK(test.given);
+      CHECK(first.calls == 1);
+      CHECK(first.number == 1);
+      runner.end_test();
+    }
+  }
+  CHECK(second.starts() == 2);
+  CHECK(runner.starts() == 0);
 }
 
 }  // namespace opspace::grading
