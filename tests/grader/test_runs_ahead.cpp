@@ -73,7 +73,9 @@ ListedRun listed_history(int variant) {
 constexpr double kLimit = 30.0;  // seconds: far more than a few calls to a local process take
 
 void begin(RunnerProcess& runner) {
-  runner.begin_test(std::chrono::steady_clock::now() + std::chrono::seconds(30), kLimit);
+  runner.begin_test(std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                         std::chrono::duration<double>(kLimit)),
+                    kLimit);
 }
 
 }  // namespace
@@ -120,9 +122,10 @@ TEST_CASE("the second runner's share is the list's odd positions, whatever the t
 
 // Issue 58: a runner's process that answered other calls first could answer a run differently
 // (a `static` in the student's code): whoever makes a run, its process answers nothing before
-// the run's first tick. Seen to fail before: the second run's first call was the process's 4th
-// (after the test's own three) and, made ahead, the second runner's 3rd.
-TEST_CASE("a run a test makes is made in a process of its own; the test's runner keeps its process") {
+// the run's first tick. Seen to fail before: the runs' first calls were the process's 4th and 6th
+// (after the test's own three, then the first run's two) and, made ahead, the second runner's 1st
+// and 3rd.
+TEST_CASE("a run a test makes is made in a process of its own, and the test's runner keeps its process") {
   RunnerProcess runner(history());
   const Hw2Api api = remote_api("1a", runner);
   begin(runner);
