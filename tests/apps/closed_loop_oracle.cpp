@@ -138,10 +138,13 @@ void run_p3(double seconds, const std::string& path) {
     int points = 0;
     for (const Contact& c : sim.contacts()) points += c.body == tool ? 1 : 0;
     const Eigen::Vector3d axis = rotation_matrix(s.lambda).col(2);  // the tool's normal
+    // The log's desired values are the problem set's (problem 2's y, z and lambda_d): the goal's
+    // probes in the force directions (x_d along x, lambda_d's tilt) are the controller's input.
+    const p3::Vector7d x_d = scenarios::p2::desired(t).x;
     csv << t;
-    csv.all(s.x_p).all(s.lambda).all(g.x_d.tail<6>()).all(force).all(moment) << points << force.x() - 10.0
+    csv.all(s.x_p).all(s.lambda).all(x_d.tail<6>()).all(force).all(moment) << points << force.x() - 10.0
         << std::atan2(axis.cross(Eigen::Vector3d::UnitX()).norm(), axis.x())
-        << orientation_error(s.lambda, g.x_d.tail<4>()).x();
+        << orientation_error(s.lambda, x_d.tail<4>()).x();
     csv.all(s.q).all(tau).end();
     return tau;
   });
