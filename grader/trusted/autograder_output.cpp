@@ -85,15 +85,21 @@ std::string not_written(const TestResult& r) {
   return text;
 }
 
+// What a test judged, its findings and, where it shows (shows_hint), its hint: every text's head.
+std::string judged_and_findings(const TestResult& r) {
+  std::string text;
+  for (const std::string& j : r.judged) text += "judged: " + j + "\n";
+  for (const std::string& f : r.findings) text += "- " + f + "\n";
+  if (shows_hint(r)) text += "hint: " + r.test->hint + "\n";
+  return text;
+}
+
 // The findings and hint; for a failed simulated test with `seed`, its runs as text tables
 // (results.json shows text alone: docs/grader.md) and the command that replays it.
 std::string feedback(const TestResult& r, std::uint64_t seed = 0) {
   if (r.not_written) return not_written(r);
-  std::string text;
-  for (const std::string& j : r.judged) text += "judged: " + j + "\n";
-  for (const std::string& f : r.findings) text += "- " + f + "\n";
+  std::string text = judged_and_findings(r);
   const bool failed = r.score < r.test->points;
-  if (failed && !r.interrupted && !r.diagnosed && !r.hint_replaced) text += "hint: " + r.test->hint + "\n";
   if (failed) text += entry_grid(r.table);
   if (failed && seed != 0) {
     for (const RunFigure& f : r.figures) text += run_table(f);
@@ -141,11 +147,8 @@ std::string shown_when(const std::string& hidden_as) {
 
 std::string feedback_beside_pictures(const TestResult& r, std::uint64_t seed) {
   if (r.not_written) return not_written(r);
-  std::string text;
-  for (const std::string& j : r.judged) text += "judged: " + j + "\n";
-  for (const std::string& f : r.findings) text += "- " + f + "\n";
+  std::string text = judged_and_findings(r);
   const bool failed = r.score < r.test->points;
-  if (failed && !r.interrupted && !r.diagnosed && !r.hint_replaced) text += "hint: " + r.test->hint + "\n";
   const std::string replay = failed && seed != 0 ? replay_command(*r.test, seed) : "";
   if (!replay.empty()) text += "replay it on your machine: " + replay + "\n";
   if (!r.printed.empty()) text += "your code printed:\n" + quote_block(r.printed, "");

@@ -191,6 +191,12 @@ struct TestResult {
   bool not_written = false;
 };
 
+/// Whether the report shows the test's fixed hint: a failed test whose findings do not already
+/// say what went wrong (a crash, a named mistake, their own finding, not written yet).
+inline bool shows_hint(const TestResult& r) {
+  return r.score < r.test->points && !r.interrupted && !r.diagnosed && !r.hint_replaced && !r.not_written;
+}
+
 class RunnerProcess;
 struct Mistake;
 

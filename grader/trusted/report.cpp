@@ -111,7 +111,7 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
       for (const std::string& j : r.judged) out << "          judged: " << j << "\n";
       if (r.score < r.test->points) {
         for (const std::string& finding : r.findings) out << "          - " << finding << "\n";
-        if (!r.interrupted && !r.diagnosed && !r.hint_replaced) out << "          hint: " << r.test->hint << "\n";
+        if (shows_hint(r)) out << "          hint: " << r.test->hint << "\n";
         const std::string replay = replay_command(*r.test, seed);
         if (!replay.empty()) out << "          replay it: " << replay << "\n";
       }

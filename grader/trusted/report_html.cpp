@@ -460,7 +460,7 @@ void test_block(std::ostream& out, const ProblemResult& p, const TestResult& r, 
     out << "<ul class=\"findings\">\n";
     for (const std::string& finding : r.findings) out << "<li>" << text(finding) << "</li>\n";
     out << "</ul>\n";
-    if (!r.interrupted && !r.diagnosed && !r.hint_replaced) out << "<p class=\"hint\">hint: " << text(r.test->hint) << "</p>\n";
+    if (shows_hint(r)) out << "<p class=\"hint\">hint: " << text(r.test->hint) << "</p>\n";
     const std::string replay = replay_command(*r.test, seed);
     if (!replay.empty()) out << "<p class=\"replay\">replay it: <code>" << text(replay) << "</code></p>\n";
     entry_table(out, r.table);
