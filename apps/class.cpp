@@ -1,4 +1,4 @@
-// hw2-class: the class page from a folder of results.json files (grader/trusted/class_page.hpp).
+// hw2-class: the class page from a folder of results.json files (grader/trusted/class/class_page.hpp).
 //   hw2-class FOLDER [--anonymous] [--out DIR]
 // FOLDER holds one subfolder per student with its results.json (scripts/regrade's OUT, or a
 // Gradescope export unzipped), or the students' results files themselves (NAME.json). Writes
@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "class_page.hpp"
+#include "class/class_page.hpp"
 #ifdef OPSPACE_GRADESCOPE_EXPORT
-#include "gradescope_export.hpp"
+#include "class/gradescope_export.hpp"
 #endif
 
 namespace {

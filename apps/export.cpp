@@ -1,4 +1,4 @@
-// hw2-export: the rows of a Gradescope export (grader/trusted/gradescope_export.hpp), for
+// hw2-export: the rows of a Gradescope export (grader/trusted/class/gradescope_export.hpp), for
 // scripts/regrade.
 //   hw2-export EXPORT
 // Prints one line per member of each submission: FOLDER, a tab, then the member's name, SID and
@@ -11,7 +11,7 @@
 #include <iostream>
 #include <string>
 
-#include "gradescope_export.hpp"
+#include "class/gradescope_export.hpp"
 
 namespace fs = std::filesystem;
 using namespace opspace::grading;

@@ -10,7 +10,7 @@ cmake_minimum_required(VERSION 3.22)
 
 # The notes name the submission's files as the student named them: "<h2>...</h2>.cpp" is a file
 # name. results.json's texts are "text" (output_format), and their & < > are written as HTML
-# entities besides (as the grader writes its own, grader/trusted/student_text.hpp), so that no
+# entities besides (as the grader writes its own, grader/trusted/common/student_text.hpp), so that no
 # page renders a tag of the student's.
 function(html_escape text out)
   string(REPLACE "&" "&amp;" text "${text}")
@@ -36,7 +36,7 @@ if(DEFINED NOTES AND EXISTS "${NOTES}")
 endif()
 # extra_data.submission: the exercise files missing (or symbolic links) and the files named
 # otherwise, from the notes' own sentences (collect_submission.sh), for the class page's "Look
-# at these first" (grader/trusted/class_results.hpp). Names as the notes show them, HTML-escaped.
+# at these first" (grader/trusted/class/class_results.hpp). Names as the notes show them, HTML-escaped.
 set(missing "")
 string(REGEX MATCHALL "\np[0-9a-z]+\\.cpp( is missing from your submission|: '[^\n]*' is a symbolic link)" found "\n${notes}")
 foreach(line IN LISTS found)
@@ -85,7 +85,7 @@ else()
     set(REASON "the grader wrote no results")
   endif()
   json_string("${notes}\nThe autograder could not grade this submission: ${REASON}.\nThis is not your fault if your files are named as asked: tell your instructor." value)
-  # extra_data.not_graded: why, for the class page (grader/trusted/class_results.hpp).
+  # extra_data.not_graded: why, for the class page (grader/trusted/class/class_results.hpp).
   json_string("${REASON}" reason)
   set(json "{\"score\": 0, \"output\": ${value}, \"output_format\": \"text\", \"visibility\": \"visible\", \"extra_data\": {\"not_graded\": ${reason}, \"submission\": ${submission}}, \"tests\": []}")
 endif()

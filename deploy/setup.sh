@@ -125,7 +125,7 @@ while IFS='=' read -r key value; do
 done < "$BUILD/grader/runner-toolchain.txt"
 
 # --- 6. prove the lockdown and grade the stubs --------------------------------------------------
-for gone in solutions tests/mutants tests/tamper grader/suite/reference.cpp build/release/apps/hw2-grade-sol; do
+for gone in solutions tests/mutants tests/tamper grader/suite/grade/reference.cpp build/release/apps/hw2-grade-sol; do
   [ ! -e "$REPO/$gone" ] || fail "$REPO/$gone is still there"
 done
 for grade in "$REPO"/problems/*/grade; do

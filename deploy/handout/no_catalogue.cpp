@@ -1,8 +1,8 @@
 // The student handout's grader names no mistakes: the catalogue (mistakes_*.cpp) and the
 // grader's reference (reference.cpp) are implementations of the answers, which a handout must
 // not contain (scripts/handout). Its reports give the tests' hints instead.
-#include "mistakes.hpp"
-#include "oracles.hpp"
+#include "judge/mistakes.hpp"
+#include "judge/oracles.hpp"
 
 namespace opspace::grading {
 

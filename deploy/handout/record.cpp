@@ -9,12 +9,12 @@
 #include <fstream>
 #include <iostream>
 
-#include "functions.hpp"
+#include "run/functions.hpp"
 #include "linked_api.hpp"
 #include "protocol/codec.hpp"
 #include "protocol/protocol.hpp"
 #include "recorded.hpp"
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 
 namespace {
 

@@ -9,11 +9,11 @@
 #include <sstream>
 #include <tuple>
 
-#include "functions.hpp"
+#include "run/functions.hpp"
 #include "protocol/codec.hpp"
 #include "protocol/protocol.hpp"
 #include "recorded.hpp"
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 
 namespace opspace::grading {
 

@@ -4,13 +4,13 @@
 /// the top of the repository, from which the build generates the macros below. Everything
 /// that names every function is derived from these rows, never written again:
 ///   - the protocol's codes (protocol.hpp: Function, kFunctions);
-///   - the grader's slots (trusted/api.hpp: Hw2Api) and trusted/functions.hpp's
+///   - the grader's slots (trusted/run/api.hpp: Hw2Api) and trusted/run/functions.hpp's
 ///     for_each_function, problem_of and function_name, which the remote api, the answers'
 ///     sizes and decoding, the diagnosis, the handout's record and replay and the fuzz target
 ///     walk;
 ///   - each runner's dispatch (untrusted/serve.hpp: OPSPACE_RUNNER_DISPATCH);
 ///   - the functions linked into our own test programs (tests/graded/linked_api.hpp) and the
-///     grader's own answers (grader/suite/reference.cpp).
+///     grader's own answers (grader/suite/grade/reference.cpp).
 /// A row missing from a table fails to compile where its function is used by name (a graded
 /// test, a mistake, the reference); a function missing from a contract, or from the reference,
 /// fails to compile in the code derived from its row. A problem's codes must carry its byte:

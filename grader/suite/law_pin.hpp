@@ -25,8 +25,8 @@
 #include <utility>
 #include <vector>
 
-#include "grading.hpp"
-#include "reference_store.hpp"  // reference_statistic(), for the Judgements it gates
+#include "judge/grading.hpp"
+#include "judge/reference_store.hpp"  // reference_statistic(), for the Judgements it gates
 
 namespace opspace::grading {
 

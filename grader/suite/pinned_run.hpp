@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "law_pin.hpp"
-#include "runs_ahead.hpp"
+#include "run/runs_ahead.hpp"
 
 namespace opspace::grading {
 

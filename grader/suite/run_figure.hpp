@@ -14,7 +14,7 @@
 #include <string>
 #include <utility>
 
-#include "grading.hpp"
+#include "judge/grading.hpp"
 
 namespace opspace::grading {
 

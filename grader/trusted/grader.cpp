@@ -16,19 +16,19 @@
 #include <random>
 #include <thread>
 
-#include "graded_suite.hpp"
-#include "grading_group.hpp"
-#include "interrupt.hpp"
-#include "mistakes.hpp"
-#include "reference_store.hpp"
-#include "remote_api.hpp"
-#include "report_html.hpp"
-#include "runner_build.hpp"
-#include "runner_cache.hpp"
-#include "runner_process.hpp"
-#include "runs_ahead.hpp"
-#include "sandbox.hpp"
-#include "student_text.hpp"
+#include "judge/graded_suite.hpp"
+#include "sandbox/grading_group.hpp"
+#include "sandbox/interrupt.hpp"
+#include "judge/mistakes.hpp"
+#include "judge/reference_store.hpp"
+#include "run/remote_api.hpp"
+#include "report/report_html.hpp"
+#include "build/runner_build.hpp"
+#include "build/runner_cache.hpp"
+#include "run/runner_process.hpp"
+#include "run/runs_ahead.hpp"
+#include "sandbox/sandbox.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

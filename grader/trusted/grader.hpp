@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "report.hpp"
-#include "runner_cache.hpp"
+#include "report/report.hpp"
+#include "build/runner_cache.hpp"
 
 namespace opspace::grading {
 

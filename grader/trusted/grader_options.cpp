@@ -6,7 +6,7 @@
 #include <thread>
 
 #include "grader.hpp"
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 
 namespace opspace::grading {
 

@@ -1,5 +1,5 @@
 /// @file problems/1a/forbidden.hpp
-/// Problem 1a's answers in the library (grader/trusted/library_answers.hpp): the PP robot's
+/// Problem 1a's answers in the library (grader/trusted/build/library_answers.hpp): the PP robot's
 /// closed forms and the generalized inverses. A runner that holds one loses the tests it
 /// answers. Trusted, but no secret: docs/grader.md lists them for students, and the handout's
 /// grader needs them.
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "library_answers.hpp"
+#include "build/library_answers.hpp"
 #include "problems/1a/tests.hpp"
 
 namespace opspace::grading::forbidden {

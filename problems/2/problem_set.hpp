@@ -1,4 +1,4 @@
-/// @file problem2.hpp
+/// @file problem_set.hpp
 /// Problem 2's desired trajectory as the problem set writes it, independently of the
 /// library: what the library tests and the graded suite check problems/2/run/scenario.hpp and 2(a) against.
 #pragma once

@@ -1,5 +1,5 @@
 /// @file problems/4/forbidden.hpp
-/// Problem 4's answers in the library (grader/trusted/library_answers.hpp): the singularity
+/// Problem 4's answers in the library (grader/trusted/build/library_answers.hpp): the singularity
 /// analysis. A runner that holds one loses the tests it answers. Trusted, but no secret:
 /// docs/grader.md lists them for students, and the handout's grader needs them.
 #pragma once
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "library_answers.hpp"
+#include "build/library_answers.hpp"
 #include "problems/4/tests.hpp"
 
 namespace opspace::grading::forbidden {

@@ -171,7 +171,7 @@ TEST_CASE("--live takes --port, a port number, and --port alone is refused by na
 }
 
 TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, never with --duration") {
-  // The report's replay command (grader/trusted/report.cpp: replay_command) is
+  // The report's replay command (grader/trusted/report/report.cpp: replay_command) is
   // `hw2-p1 3 --test "NAME" --seed N`: it must parse, and start_replay then sets the graded
   // run's duration (p1b::Scenario::kGradedDuration: 10 s, one period of q_d). Seen to fail on the
   // parser before --test: "unknown argument '--test'", exit 2.

@@ -1,5 +1,5 @@
 cmake_minimum_required(VERSION 3.22)
-# Checks a class page (grader/trusted/class_page.hpp) and its mistakes.csv on their data, against
+# Checks a class page (grader/trusted/class/class_page.hpp) and its mistakes.csv on their data, against
 # what a synthetic class was made of (scripts/synthetic-class's manifest):
 #   cmake -DPAGE=class.html -DCSV=mistakes.csv -DMANIFEST=class.manifest "-DMISTAKES=file=mistake;..."
 #         [-DNAMES=name;...] [-DANONYMOUS=ON -DFORBIDDEN=text;...] -P check_class_page.cmake

@@ -13,7 +13,7 @@ bash "$repo/scripts/handout" "$work/handout"
 cd "$work/handout"
 [ "$(git rev-list --count HEAD)" -eq 1 ] || { echo "the handout is not one commit"; exit 1; }
 [ -z "$(git status --porcelain)" ] || { echo "the handout's work tree is not clean"; exit 1; }
-for gone in solutions tests/mutants tests/tamper docs/instructor.md lib/src/algorithms/pp_robot.cpp problems/1b/grade/graded.cpp problems/1a/grade/answers.hpp grader/suite/reference.cpp; do
+for gone in solutions tests/mutants tests/tamper docs/instructor.md lib/src/algorithms/pp_robot.cpp problems/1b/grade/graded.cpp problems/1a/grade/answers.hpp grader/suite/grade/reference.cpp; do
   [ ! -e "$gone" ] || { echo "the handout has $gone"; exit 1; }
 done
 source scripts/problems.sh

@@ -16,7 +16,7 @@
 #     file or folder from the page's folder;
 #   - a partial path to a source or a doc (math/spatial.hpp, <opspace/algorithms/dynamics.hpp>)
 #     is the end of a repository path, or names one from the citing file's folder
-#     (../support/random.hpp).
+#     (../support/script.sh).
 # A word with a placeholder or a pattern is no path: problems/<key>/, *.cpp, {1b,2}, $VAR, @VAR@,
 # "..."; nor is a path in another tree, written after a colon as git writes a file of a commit
 # (sai2-model:tests/Tests_SaiModel.cpp); nor what git ignores (build/, out/, web/node_modules/),

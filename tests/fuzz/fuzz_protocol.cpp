@@ -1,5 +1,5 @@
 // libFuzzer target: the grader's reading of what a runner sends
-// (grader/trusted/answer_decoding.cpp, student_text.cpp's student_line()): arbitrary bytes as
+// (grader/trusted/run/answer_decoding.cpp, student_text.cpp's student_line()): arbitrary bytes as
 // the answer to a request.
 // Input: one byte choosing the function asked (of protocol::kFunctions, every function in
 // the problems' tables' order), then a 16-byte answer header, then the payload.
@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "answer_decoding.hpp"
-#include "student_text.hpp"
+#include "run/answer_decoding.hpp"
+#include "common/student_text.hpp"
 #include "protocol/codec.hpp"
-#include "runner_process.hpp"
+#include "run/runner_process.hpp"
 
 namespace {
 

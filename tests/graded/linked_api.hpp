@@ -4,7 +4,7 @@
 /// grader never includes this header: it does not link a student's code.
 #pragma once
 
-#include "api.hpp"
+#include "run/api.hpp"
 
 namespace opspace::grading {
 

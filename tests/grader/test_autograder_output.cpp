@@ -1,4 +1,4 @@
-// results.json (grader/trusted/autograder_output.cpp, written by nlohmann-json), read back
+// results.json (grader/trusted/report/autograder_output.cpp, written by nlohmann-json), read back
 // with nlohmann-json: valid JSON whatever the texts hold, and the numbers as before.
 #include <doctest/doctest.h>
 
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "grader.hpp"
-#include "report_html.hpp"
+#include "report/report_html.hpp"
 #include "run_figure.hpp"
 #include "tests/support/gradescope_html.hpp"
 

@@ -1,4 +1,4 @@
-// The class page (grader/trusted/class_page.hpp) from results.json texts made here: a mistake
+// The class page (grader/trusted/class/class_page.hpp) from results.json texts made here: a mistake
 // counts students, not tests; every text is escaped, in the elements and in the JSON block; the
 // csv neutralises a formula; the anonymous page names nobody; a number it cannot draw costs its
 // own row, in bounded time and memory, and so do the plots of report_html.hpp.
@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "class_page.hpp"
-#include "report_html.hpp"
+#include "class/class_page.hpp"
+#include "report/report_html.hpp"
 
 namespace grading = opspace::grading;
 using Json = nlohmann::json;

@@ -1,4 +1,4 @@
-// What the grader reads of a runner build's ELF files (grader/trusted/elf_files.hpp), as hostile
+// What the grader reads of a runner build's ELF files (grader/trusted/build/elf_files.hpp), as hostile
 // input: a real program's loader and libraries are found; a file cut short, an offset past its
 // end or a library name with a slash is refused with the reason, never read past its end; an
 // object carrying LTO bytecode is refused before the link.
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "elf_files.hpp"
+#include "build/elf_files.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The grader's reading of a runner's symbols (grader/trusted/library_answers.cpp): which
+// The grader's reading of a runner's symbols (grader/trusted/build/library_answers.cpp): which
 // library answer a demangled name belongs to, whatever form nm prints it in. The names are
 // written as GNU nm -C prints them; what each belongs to follows from C++'s grammar.
 #include <doctest/doctest.h>
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "library_answers.hpp"
+#include "build/library_answers.hpp"
 
 using opspace::grading::answers_among;
 using opspace::grading::owner_name;

@@ -1,4 +1,4 @@
-// PrairieLearn's results.json (grader/trusted/prairielearn_output.cpp), read back with
+// PrairieLearn's results.json (grader/trusted/report/prairielearn_output.cpp), read back with
 // nlohmann-json: the fields PrairieLearn's external grader reads, the failed runs' plots as
 // images, the hidden tests left out, and the 1 MB bound kept whatever the grading produced.
 #include <doctest/doctest.h>
@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "grader.hpp"
-#include "raster.hpp"
-#include "report_html.hpp"
+#include "report/raster.hpp"
+#include "report/report_html.hpp"
 
 namespace grading = opspace::grading;
 

@@ -1,4 +1,4 @@
-// nm's symbol lists of a runner's build (grader/trusted/runner_build.hpp, list_symbols): a list
+// nm's symbol lists of a runner's build (grader/trusted/build/runner_build.hpp, list_symbols): a list
 // over the grader's bound is the submission's doing and says so, naming the file and the sizes;
 // nm that cannot be started is the grader's. And the tools the build's toolchain file chose:
 // nm's plugin and the linker, each against what the compiler says here. nm runs outside the sandbox here (isolate off): what
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "compiler_messages.hpp"
-#include "runner_build.hpp"
+#include "build/compiler_messages.hpp"
+#include "build/runner_build.hpp"
 
 namespace fs = std::filesystem;
 namespace grading = opspace::grading;

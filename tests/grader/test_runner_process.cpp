@@ -1,4 +1,4 @@
-// The grader's reading of a runner's answers (grader/trusted/runner_process.hpp): an answer is
+// The grader's reading of a runner's answers (grader/trusted/run/runner_process.hpp): an answer is
 // taken from the byte stream, however the runner cut it into writes, and only as
 // check_answer allows; garbage, a partial answer and a runner that ends are failures in words
 // for the student. The runner here is tests/grader/fake_runner.cpp, which echoes a request's
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "runner_process.hpp"
+#include "run/runner_process.hpp"
 
 namespace grading = opspace::grading;
 namespace protocol = opspace::protocol;

@@ -1,4 +1,4 @@
-// The runs a second runner makes ahead (grader/trusted/runs_ahead.hpp). First without processes:
+// The runs a second runner makes ahead (grader/trusted/run/runs_ahead.hpp). First without processes:
 // the functions are none (no run here calls one), so the RunnerProcess standing for the second
 // runner is never started; each run records which thread made it. Then with runners that say
 // what their process has answered (tests/grader/fake_runner.cpp, "history", unsandboxed): the
@@ -9,11 +9,11 @@
 #include <chrono>
 #include <thread>
 
-#include "diagnosis.hpp"
+#include "judge/diagnosis.hpp"
 #include "pinned_run.hpp"
-#include "remote_api.hpp"
-#include "runner_process.hpp"
-#include "runs_ahead.hpp"
+#include "run/remote_api.hpp"
+#include "run/runner_process.hpp"
+#include "run/runs_ahead.hpp"
 
 namespace opspace::grading {
 namespace {

@@ -1,4 +1,4 @@
-// The sandbox's system-call filter (grader/trusted/sandbox_seccomp.hpp): seccomp_probe
+// The sandbox's system-call filter (grader/trusted/sandbox/sandbox_seccomp.hpp): seccomp_probe
 // tries refused and allowed calls, under the filter alone (its pid is any, so kill()'s rule for
 // other pids is exercised below and above its own) and in the grader's whole sandbox.
 #include <doctest/doctest.h>
@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "sandbox.hpp"
-#include "sandbox_seccomp.hpp"
+#include "sandbox/sandbox.hpp"
+#include "sandbox/sandbox_seccomp.hpp"
 
 namespace grading = opspace::grading;
 

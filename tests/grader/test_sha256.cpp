@@ -1,10 +1,10 @@
-// The grader's cache key (grader/trusted/sha256.cpp: libcrypto's SHA-256 behind our
+// The grader's cache key (grader/trusted/common/sha256.cpp: libcrypto's SHA-256 behind our
 // add()/hex()) against published digests.
 #include <doctest/doctest.h>
 
 #include <string>
 
-#include "sha256.hpp"
+#include "common/sha256.hpp"
 
 using opspace::grading::Sha256;
 

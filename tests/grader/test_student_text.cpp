@@ -1,11 +1,11 @@
-// How the grader shows text from the student's side (grader/trusted/student_text.cpp).
+// How the grader shows text from the student's side (grader/trusted/common/student_text.cpp).
 // The code points and their UTF-8 bytes are Unicode's (UnicodeData.txt, Bidi_Class); the rule
 // under test is that none of them reaches the report raw, and nothing else is changed.
 #include <doctest/doctest.h>
 
 #include <string>
 
-#include "student_text.hpp"
+#include "common/student_text.hpp"
 
 using opspace::grading::escape_student_text;
 using opspace::grading::quote_block;

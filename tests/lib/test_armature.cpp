@@ -10,7 +10,7 @@
 #include "opspace/model/model_text.hpp"
 #include "opspace/model/urdf.hpp"
 #include "opspace/simulation/simulation.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using namespace opspace;
 

@@ -12,7 +12,7 @@
 #include "opspace/algorithms/pp_robot.hpp"
 #include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using namespace opspace;
 using opspace::testing::Random;

@@ -9,7 +9,7 @@
 #include "opspace/algorithms/euler_params.hpp"
 #include "opspace/algorithms/linalg.hpp"
 #include "opspace/math/constants.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using namespace opspace;
 using opspace::testing::Random;

@@ -10,7 +10,7 @@
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using namespace opspace;
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "opspace/algorithms/linalg.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using opspace::testing::Random;
 

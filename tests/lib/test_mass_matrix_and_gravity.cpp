@@ -5,7 +5,7 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/model/urdf.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using namespace opspace;
 

@@ -9,7 +9,7 @@
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/model/urdf.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using opspace::testing::Random;
 

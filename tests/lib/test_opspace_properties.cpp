@@ -18,7 +18,7 @@
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/math/constants.hpp"
 #include "opspace/model/model.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using namespace opspace;
 using opspace::testing::Random;

@@ -5,7 +5,7 @@
 
 #include "opspace/algorithms/linalg.hpp"
 #include "opspace/algorithms/pp_robot.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 namespace pp = opspace::pp;
 using opspace::testing::Random;

@@ -11,8 +11,8 @@
 #include <problems/2/run/scenario.hpp>
 #include <problems/4/run/scenario.hpp>
 #include "opspace/model/urdf.hpp"
-#include "support/problem2.hpp"
-#include "support/random.hpp"
+#include "problems/2/problem_set.hpp"
+#include "grader/suite/random.hpp"
 
 using namespace opspace;
 using opspace::testing::problem_set_x_d;

@@ -11,7 +11,7 @@
 #include "opspace/algorithms/euler_params.hpp"
 #include <Eigen/Geometry>
 #include "opspace/model/urdf.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using namespace opspace;
 namespace p3 = opspace::scenarios::p3;

@@ -12,7 +12,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 
 #include "opspace/simulation/simulation.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using opspace::Body;
 using opspace::Integrator;

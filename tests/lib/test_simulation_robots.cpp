@@ -10,7 +10,7 @@
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/simulation/simulation.hpp"
 #include "opspace/model/urdf.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using opspace::Data;
 using opspace::Integrator;

@@ -12,7 +12,7 @@
 #include "opspace/algorithms/singularity.hpp"
 #include "opspace/math/constants.hpp"
 #include "opspace/model/urdf.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 using opspace::SingularityType;
 using opspace::testing::Random;

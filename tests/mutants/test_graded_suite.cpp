@@ -16,12 +16,12 @@
 
 #include "grader.hpp"
 #include "linked_api.hpp"
-#include "mistakes.hpp"
-#include "library_answers.hpp"
-#include "oracles.hpp"
+#include "judge/mistakes.hpp"
+#include "build/library_answers.hpp"
+#include "judge/oracles.hpp"
 #include "problems/2/tests.hpp"
-#include "report.hpp"
-#include "graded_suite.hpp"
+#include "report/report.hpp"
+#include "judge/graded_suite.hpp"
 #include "law_pin.hpp"
 #include "tests/support/gradescope_html.hpp"
 

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 #include "law_pin.hpp"
 #include "linked_api.hpp"
-#include "oracles.hpp"
+#include "judge/oracles.hpp"
 #include "problems/1b/tests.hpp"
 
 namespace grading = opspace::grading;

@@ -1,4 +1,4 @@
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 
 namespace opspace::grading {
 

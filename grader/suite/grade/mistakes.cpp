@@ -1,5 +1,5 @@
 // Every known mistake, problem by problem.
-#include "mistakes.hpp"
+#include "judge/mistakes.hpp"
 
 namespace opspace::grading {
 

@@ -1,7 +1,7 @@
 // The grader's answers to every function of the problem set, gathered as a Hw2Api: each
 // problem's answers are in its folder (problems/<key>/grade/answers.hpp, included by the build's
 // problem_answers.hpp, generated from problems.txt).
-#include "oracles.hpp"
+#include "judge/oracles.hpp"
 #include "problem_answers.hpp"
 
 namespace opspace::grading::oracle {

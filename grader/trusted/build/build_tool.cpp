@@ -1,4 +1,4 @@
-#include "build_tool.hpp"
+#include "build/build_tool.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -9,8 +9,8 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "grading_group.hpp"
-#include "sandbox.hpp"
+#include "sandbox/grading_group.hpp"
+#include "sandbox/sandbox.hpp"
 
 namespace opspace::grading {
 

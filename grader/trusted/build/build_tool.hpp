@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "runner_build.hpp"
+#include "build/runner_build.hpp"
 
 namespace opspace::grading {
 

@@ -1,4 +1,4 @@
-#include "compiler_messages.hpp"
+#include "build/compiler_messages.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "student_text.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

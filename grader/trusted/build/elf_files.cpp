@@ -2,7 +2,7 @@
 // a student's file and the runner linked from it, so every header is checked against the file's
 // size before any use. The system's libraries, found by name in the loader's folders, are read
 // the same way.
-#include "elf_files.hpp"
+#include "build/elf_files.hpp"
 
 #include <elf.h>
 #include <sys/stat.h>
@@ -13,8 +13,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "compiler_messages.hpp"
-#include "student_text.hpp"
+#include "build/compiler_messages.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

@@ -1,4 +1,4 @@
-#include "library_answers.hpp"
+#include "build/library_answers.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "runner_build.hpp"
+#include "build/runner_build.hpp"
 
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -14,18 +14,18 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "build_tool.hpp"
-#include "compiler_messages.hpp"
-#include "elf_files.hpp"
-#include "grading_group.hpp"
-#include "interrupt.hpp"
-#include "library_answers.hpp"
-#include "runner_cache.hpp"
-#include "runner_process.hpp"
-#include "sandbox.hpp"
-#include "sha256.hpp"
-#include "size_text.hpp"
-#include "student_text.hpp"
+#include "build/build_tool.hpp"
+#include "build/compiler_messages.hpp"
+#include "build/elf_files.hpp"
+#include "sandbox/grading_group.hpp"
+#include "sandbox/interrupt.hpp"
+#include "build/library_answers.hpp"
+#include "build/runner_cache.hpp"
+#include "run/runner_process.hpp"
+#include "sandbox/sandbox.hpp"
+#include "common/sha256.hpp"
+#include "common/size_text.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

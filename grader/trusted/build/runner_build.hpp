@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "fault.hpp"
-#include "library_answers.hpp"
-#include "sandbox.hpp"
+#include "common/fault.hpp"
+#include "build/library_answers.hpp"
+#include "sandbox/sandbox.hpp"
 
 namespace opspace::grading {
 

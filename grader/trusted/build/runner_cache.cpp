@@ -1,7 +1,7 @@
 // The runners' cache, bounded (runner_cache.hpp). Entries: runner-<key>-<hash> and its
 // .report; held-<pid>-<key>, a grading's hard link to what it runs; <entry>.tmp<pid>, a copy
 // being written. A runner's last use is its modification time, set at each use.
-#include "runner_cache.hpp"
+#include "build/runner_cache.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -17,8 +17,8 @@
 #include <system_error>
 #include <vector>
 
-#include "process_ended.hpp"
-#include "size_text.hpp"
+#include "common/process_ended.hpp"
+#include "common/size_text.hpp"
 
 namespace fs = std::filesystem;
 

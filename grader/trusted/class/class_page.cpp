@@ -1,4 +1,4 @@
-#include "class_page.hpp"
+#include "class/class_page.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -11,8 +11,8 @@
 #include <ostream>
 #include <set>
 
-#include "report_html.hpp"
-#include "student_text.hpp"
+#include "report/report_html.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

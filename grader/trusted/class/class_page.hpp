@@ -14,7 +14,7 @@
 #include <iosfwd>
 #include <vector>
 
-#include "class_results.hpp"
+#include "class/class_results.hpp"
 
 namespace opspace::grading {
 

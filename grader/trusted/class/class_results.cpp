@@ -1,4 +1,4 @@
-#include "class_results.hpp"
+#include "class/class_results.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "grading.hpp"
+#include "judge/grading.hpp"
 
 namespace opspace::grading {
 

@@ -1,4 +1,4 @@
-#include "gradescope_export.hpp"
+#include "class/gradescope_export.hpp"
 
 #include <yaml-cpp/yaml.h>
 

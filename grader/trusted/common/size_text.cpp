@@ -1,4 +1,4 @@
-#include "size_text.hpp"
+#include "common/size_text.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "student_text.hpp"
+#include "common/student_text.hpp"
 
 #include <cstdio>
 

@@ -1,11 +1,11 @@
-#include "diagnosis.hpp"
+#include "judge/diagnosis.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
-#include "functions.hpp"
-#include "oracles.hpp"
+#include "run/functions.hpp"
+#include "judge/oracles.hpp"
 #include "protocol/codec.hpp"
 
 namespace opspace::grading {

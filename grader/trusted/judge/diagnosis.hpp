@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "api.hpp"
-#include "mistakes.hpp"
+#include "run/api.hpp"
+#include "judge/mistakes.hpp"
 #include "protocol/protocol.hpp"
 
 namespace opspace::grading {

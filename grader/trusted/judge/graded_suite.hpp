@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "grading.hpp"
+#include "judge/grading.hpp"
 #include "protocol/problems.hpp"
-#include "runs_ahead.hpp"
+#include "run/runs_ahead.hpp"
 
 namespace opspace::grading {
 

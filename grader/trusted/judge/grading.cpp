@@ -1,4 +1,4 @@
-#include "grading.hpp"
+#include "judge/grading.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,12 +6,12 @@
 #include <exception>
 #include <sstream>
 
-#include "diagnosis.hpp"
-#include "mistakes.hpp"
-#include "reference_store.hpp"
-#include "runner_process.hpp"
-#include "runs_ahead.hpp"
-#include "student_text.hpp"
+#include "judge/diagnosis.hpp"
+#include "judge/mistakes.hpp"
+#include "judge/reference_store.hpp"
+#include "run/runner_process.hpp"
+#include "run/runs_ahead.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

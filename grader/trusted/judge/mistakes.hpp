@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "api.hpp"
+#include "run/api.hpp"
 
 namespace opspace::grading {
 

@@ -1,4 +1,4 @@
-#include "reference_store.hpp"
+#include "judge/reference_store.hpp"
 
 #include <unistd.h>
 
@@ -11,7 +11,7 @@
 #include <mutex>
 #include <sstream>
 
-#include "sha256.hpp"
+#include "common/sha256.hpp"
 
 namespace opspace::grading {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "grading.hpp"
+#include "judge/grading.hpp"
 
 namespace opspace::grading {
 

@@ -9,11 +9,11 @@
 #include <ostream>
 #include <sstream>
 
-#include "class_record.hpp"
+#include "report/class_record.hpp"
 #include "grader.hpp"
-#include "raster.hpp"
-#include "report_html.hpp"
-#include "student_text.hpp"
+#include "report/raster.hpp"
+#include "report/report_html.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

@@ -1,4 +1,4 @@
-#include "class_record.hpp"
+#include "report/class_record.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "report.hpp"
+#include "report/report.hpp"
 
 namespace opspace::grading {
 

@@ -12,9 +12,9 @@
 #include <string>
 
 #include "grader.hpp"
-#include "raster.hpp"
-#include "report_html.hpp"
-#include "student_text.hpp"
+#include "report/raster.hpp"
+#include "report/report_html.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

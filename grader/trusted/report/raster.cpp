@@ -1,4 +1,4 @@
-#include "raster.hpp"
+#include "report/raster.hpp"
 
 #include <zlib.h>
 

@@ -1,6 +1,6 @@
-#include "report.hpp"
+#include "report/report.hpp"
 
-#include "student_text.hpp"
+#include "common/student_text.hpp"
 
 #include <cstdio>
 #include <ostream>

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 
 namespace opspace::grading {
 

@@ -1,4 +1,4 @@
-#include "report_html.hpp"
+#include "report/report_html.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <ostream>
 #include <sstream>
 
-#include "raster.hpp"
-#include "student_text.hpp"
+#include "report/raster.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

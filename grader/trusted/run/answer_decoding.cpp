@@ -1,8 +1,8 @@
-#include "answer_decoding.hpp"
+#include "run/answer_decoding.hpp"
 
 #include <stdexcept>
 
-#include "functions.hpp"
+#include "run/functions.hpp"
 #include "protocol/codec.hpp"
 
 namespace opspace::grading {

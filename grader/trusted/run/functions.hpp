@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "api.hpp"
+#include "run/api.hpp"
 #include "protocol/protocol.hpp"
 
 namespace opspace::grading {

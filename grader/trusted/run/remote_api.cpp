@@ -1,8 +1,8 @@
-#include "remote_api.hpp"
+#include "run/remote_api.hpp"
 
 #include <atomic>
 
-#include "functions.hpp"
+#include "run/functions.hpp"
 #include "protocol/codec.hpp"
 
 namespace opspace::grading {

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "api.hpp"
-#include "runner_process.hpp"
+#include "run/api.hpp"
+#include "run/runner_process.hpp"
 
 namespace opspace::grading {
 

@@ -1,4 +1,4 @@
-#include "runner_process.hpp"
+#include "run/runner_process.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -12,9 +12,9 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "answer_decoding.hpp"
-#include "grading_group.hpp"
-#include "student_text.hpp"
+#include "run/answer_decoding.hpp"
+#include "sandbox/grading_group.hpp"
+#include "common/student_text.hpp"
 
 namespace opspace::grading {
 

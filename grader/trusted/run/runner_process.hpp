@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "fault.hpp"
+#include "common/fault.hpp"
 #include "protocol/protocol.hpp"
-#include "sandbox.hpp"
+#include "sandbox/sandbox.hpp"
 
 namespace opspace::grading {
 

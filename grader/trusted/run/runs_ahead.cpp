@@ -1,4 +1,4 @@
-#include "runs_ahead.hpp"
+#include "run/runs_ahead.hpp"
 
 #include <chrono>
 #include <condition_variable>
@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "diagnosis.hpp"
-#include "runner_process.hpp"
+#include "judge/diagnosis.hpp"
+#include "run/runner_process.hpp"
 
 namespace opspace::grading {
 

@@ -18,7 +18,7 @@
 #include <tuple>
 #include <vector>
 
-#include "api.hpp"
+#include "run/api.hpp"
 
 namespace opspace::grading {
 

@@ -6,7 +6,7 @@
 // its programs (cpu, memory.max, pids.max). Programs enter by the grader writing their pid into
 // cgroup.procs; their children inherit the group. At exit the grader moves back and removes
 // its folders.
-#include "grading_group.hpp"
+#include "sandbox/grading_group.hpp"
 
 #include <dirent.h>
 #include <signal.h>
@@ -21,7 +21,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "process_ended.hpp"
+#include "common/process_ended.hpp"
 
 namespace opspace::grading {
 

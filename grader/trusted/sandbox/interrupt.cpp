@@ -1,4 +1,4 @@
-#include "interrupt.hpp"
+#include "sandbox/interrupt.hpp"
 
 #include <pthread.h>
 #include <unistd.h>
@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "sandbox.hpp"
+#include "sandbox/sandbox.hpp"
 
 namespace opspace::grading {
 

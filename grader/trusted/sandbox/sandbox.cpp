@@ -4,7 +4,7 @@
 // that between clone() and execve() the child makes only system calls (sandbox_child.cpp).
 // The one thing that needs the child's pid, its seccomp filter (sandbox_seccomp.hpp), is
 // built by the parent after clone() and read by the child from a pipe.
-#include "sandbox.hpp"
+#include "sandbox/sandbox.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -22,10 +22,10 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "grading_group.hpp"
-#include "interrupt.hpp"
-#include "sandbox_plan.hpp"
-#include "sandbox_seccomp.hpp"
+#include "sandbox/grading_group.hpp"
+#include "sandbox/interrupt.hpp"
+#include "sandbox/sandbox_plan.hpp"
+#include "sandbox/sandbox_seccomp.hpp"
 
 namespace opspace::grading {
 

@@ -17,8 +17,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "sandbox_plan.hpp"
-#include "sandbox_seccomp.hpp"
+#include "sandbox/sandbox_plan.hpp"
+#include "sandbox/sandbox_seccomp.hpp"
 
 namespace opspace::grading::sandbox_internal {
 

@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "interrupt.hpp"
-#include "sandbox_plan.hpp"
+#include "sandbox/interrupt.hpp"
+#include "sandbox/sandbox_plan.hpp"
 
 namespace opspace::grading::sandbox_internal {
 

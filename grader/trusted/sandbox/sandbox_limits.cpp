@@ -6,7 +6,7 @@
 // limit of 0 is left as it is.
 #include <sys/resource.h>
 
-#include "sandbox_plan.hpp"
+#include "sandbox/sandbox_plan.hpp"
 
 namespace opspace::grading::sandbox_internal {
 

@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "sandbox.hpp"
+#include "sandbox/sandbox.hpp"
 
 namespace opspace::grading::sandbox_internal {
 

@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-#include "sandbox_plan.hpp"
+#include "sandbox/sandbox_plan.hpp"
 
 namespace opspace::grading {
 

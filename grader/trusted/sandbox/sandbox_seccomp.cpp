@@ -1,6 +1,6 @@
 // The system-call filter of sandbox_seccomp.hpp, written with libseccomp (its names resolve
 // to this architecture's system-call numbers; it checks the architecture and the x32 ABI).
-#include "sandbox_seccomp.hpp"
+#include "sandbox/sandbox_seccomp.hpp"
 
 #include <linux/seccomp.h>
 #include <sched.h>

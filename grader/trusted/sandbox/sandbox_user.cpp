@@ -27,7 +27,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "sandbox_plan.hpp"
+#include "sandbox/sandbox_plan.hpp"
 
 namespace opspace::grading {
 

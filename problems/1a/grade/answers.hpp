@@ -1,7 +1,7 @@
 /// @file problems/1a/grade/answers.hpp
 /// The grader's answers to problem 1a's functions, named as its contract's
 /// (answer::p1a::mass_matrix answers hw2::p1a::mass_matrix): the closed forms of pp_robot.hpp and
-/// the general formulas of linalg.hpp. grader/suite/reference.cpp gathers every problem's into the
+/// the general formulas of linalg.hpp. grader/suite/grade/reference.cpp gathers every problem's into the
 /// grader's Hw2Api (identity 2), which the catalogue of mistakes replays. Trusted: neither the
 /// handout nor the Gradescope image keeps this file.
 #pragma once
@@ -9,7 +9,7 @@
 #include <opspace/algorithms/linalg.hpp>
 #include <opspace/algorithms/pp_robot.hpp>
 
-#include "api.hpp"
+#include "run/api.hpp"
 
 namespace opspace::grading::oracle {
 

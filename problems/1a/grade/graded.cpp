@@ -7,9 +7,9 @@
 #include <opspace/algorithms/linalg.hpp>
 #include <opspace/algorithms/pp_robot.hpp>
 
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 #include "problems/1a/tests.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 namespace opspace::grading {
 

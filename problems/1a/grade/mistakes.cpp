@@ -1,5 +1,5 @@
 // Known mistakes of problem 1a. Each replaces one function by a wrong formula.
-#include "mistakes.hpp"
+#include "judge/mistakes.hpp"
 #include "problems/1a/tests.hpp"
 
 namespace opspace::grading {

@@ -1,11 +1,11 @@
 /// @file problems/1b/grade/answers.hpp
 /// The grader's answers to problem 1b's functions, named as its contract's (answer::p1b::control
-/// answers hw2::p1b::control): the law written out in graded.cpp. grader/suite/reference.cpp
+/// answers hw2::p1b::control): the law written out in graded.cpp. grader/suite/grade/reference.cpp
 /// gathers every problem's into the grader's Hw2Api (identity 2), which the catalogue of mistakes
 /// replays. Trusted: neither the handout nor the Gradescope image keeps this file.
 #pragma once
 
-#include "api.hpp"
+#include "run/api.hpp"
 
 namespace opspace::grading::oracle {
 

@@ -15,11 +15,11 @@
 
 #include "pinned_run.hpp"
 #include "answers.hpp"
-#include "oracles.hpp"
+#include "judge/oracles.hpp"
 #include "run_figure.hpp"
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 #include "problems/1b/tests.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 namespace opspace::grading {
 

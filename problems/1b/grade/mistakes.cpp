@@ -2,7 +2,7 @@
 // solutions, or the grader's oracle) and changes it in one place. Every simulated test checks
 // the law at every tick of its runs (law_pin.hpp), so a mistake in a part's law costs each
 // simulated test that runs that part, whatever the run's behaviour.
-#include "mistakes.hpp"
+#include "judge/mistakes.hpp"
 #include "problems/1b/tests.hpp"
 
 namespace opspace::grading {

@@ -1,15 +1,15 @@
 /// @file problems/2/grade/answers.hpp
 /// The grader's answers to problem 2's functions, named as its contract's (answer::p2::control
 /// answers hw2::p2::control): 2(a) and 2(b) as the problem set writes them, the law written out in
-/// graded.cpp. grader/suite/reference.cpp gathers every problem's into the grader's Hw2Api
+/// graded.cpp. grader/suite/grade/reference.cpp gathers every problem's into the grader's Hw2Api
 /// (identity 2), which the catalogue of mistakes replays. Trusted: neither the handout nor the
 /// Gradescope image keeps this file.
 #pragma once
 
 #include <opspace/algorithms/euler_params.hpp>
 
-#include "api.hpp"
-#include "support/problem2.hpp"
+#include "run/api.hpp"
+#include "problems/2/problem_set.hpp"
 
 namespace opspace::grading::oracle {
 

@@ -18,12 +18,12 @@
 
 #include "pinned_run.hpp"
 #include "answers.hpp"
-#include "oracles.hpp"
+#include "judge/oracles.hpp"
 #include "run_figure.hpp"
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 #include "problems/2/tests.hpp"
-#include "support/problem2.hpp"
-#include "support/random.hpp"
+#include "problems/2/problem_set.hpp"
+#include "grader/suite/random.hpp"
 
 namespace opspace::grading {
 

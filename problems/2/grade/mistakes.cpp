@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-#include "mistakes.hpp"
+#include "judge/mistakes.hpp"
 #include "problems/2/tests.hpp"
 
 namespace opspace::grading {

@@ -1,12 +1,12 @@
 /// @file problems/3/grade/answers.hpp
 /// The grader's answers to problem 3's functions, named as its contract's (answer::p3::control
 /// answers hw2::p3::control): Omega, Omega-bar and the law written out in graded.cpp.
-/// grader/suite/reference.cpp gathers every problem's into the grader's Hw2Api (identity 2), which
+/// grader/suite/grade/reference.cpp gathers every problem's into the grader's Hw2Api (identity 2), which
 /// the catalogue of mistakes replays. Trusted: neither the handout nor the Gradescope image keeps
 /// this file.
 #pragma once
 
-#include "api.hpp"
+#include "run/api.hpp"
 
 namespace opspace::grading::oracle {
 

@@ -7,10 +7,10 @@
 #include <opspace/algorithms/euler_params.hpp>
 #include <problems/3/contract.hpp>
 
-#include "mistakes.hpp"
+#include "judge/mistakes.hpp"
 #include "problems/3/tests.hpp"
 #include "answers.hpp"
-#include "oracles.hpp"
+#include "judge/oracles.hpp"
 
 namespace opspace::grading {
 

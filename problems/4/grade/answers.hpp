@@ -1,14 +1,14 @@
 /// @file problems/4/grade/answers.hpp
 /// The grader's answers to problem 4's functions, named as its contract's (answer::p4::control
 /// answers hw2::p4::control): questions i-iv by the library's singularity analysis, the law written
-/// out in graded.cpp. grader/suite/reference.cpp gathers every problem's into the grader's Hw2Api
+/// out in graded.cpp. grader/suite/grade/reference.cpp gathers every problem's into the grader's Hw2Api
 /// (identity 2), which the catalogue of mistakes replays. Trusted: neither the handout nor the
 /// Gradescope image keeps this file.
 #pragma once
 
 #include <opspace/algorithms/singularity.hpp>
 
-#include "api.hpp"
+#include "run/api.hpp"
 
 namespace opspace::grading::oracle {
 

