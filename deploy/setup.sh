@@ -38,6 +38,8 @@ fi
 # enable.
 # shellcheck source=/dev/null
 source "$REPO/scripts/setup.sh"
+# shellcheck source=/dev/null
+source "$REPO/scripts/secret_side.sh"  # what step 5 removes, by place (scripts/handout reads it too)
 packages=(libtinyxml-dev util-linux)
 # Not the benchmarks' library, nor the live lab's server, nor yaml-cpp (an export's metadata is read by
 # scripts/regrade, never by the bundle): the bundle grades one submission; it serves no page.
@@ -108,9 +110,9 @@ rm -rf "$REPO/solutions" "$REPO/tests/mutants" "$REPO/tests/tamper" "$REPO/tests
        "$BUILD/solutions" "$BUILD/tests/mutants" "$BUILD/tests/tamper" "$BUILD/grading-cache" \
        "$BUILD/grader/suite/CMakeFiles/opspace_graded.dir" "$BUILD/Testing"
 rm -rf "$BUILD"/problems/CMakeFiles/opspace_graded_problems.dir
-# Each problem's secret side, by place (problems/CMakeLists.txt): its whole grade/ folder.
-rm -rf "$REPO"/problems/*/grade
-rm -f "$REPO"/grader/suite/*.cpp
+# The secret side, by place (scripts/secret_side.sh): every grade/ folder of problems/ and
+# grader/, whole.
+opspace_remove_secret_side "$REPO"
 find "$BUILD" -name '*-sol' -type f -delete
 find "$BUILD" \( -name '*-sol.dir' -o -name 'opspace_solutions.dir' \) -type d -prune -exec rm -rf {} +
 # What remains (the library, the grader, its runner loops, the stubs) is root's alone: the
@@ -125,12 +127,11 @@ while IFS='=' read -r key value; do
 done < "$BUILD/grader/runner-toolchain.txt"
 
 # --- 6. prove the lockdown and grade the stubs --------------------------------------------------
-for gone in solutions tests/mutants tests/tamper grader/suite/grade/reference.cpp build/release/apps/hw2-grade-sol; do
+for gone in solutions tests/mutants tests/tamper build/release/apps/hw2-grade-sol; do
   [ ! -e "$REPO/$gone" ] || fail "$REPO/$gone is still there"
 done
-for grade in "$REPO"/problems/*/grade; do
-  [ ! -e "$grade" ] || fail "$grade (a problem's secret side) is still there"
-done
+secrets=$(opspace_secret_folders "$REPO")
+[ -z "$secrets" ] || fail "the secret side is still there: $secrets"
 if [ "$(id -u)" -eq 0 ]; then
   for secret in "$BUILD/apps/hw2-grade" "$REPO/grader/suite/CMakeLists.txt" \
                 "$REPO/lib/src/algorithms/pp_robot.cpp" \
