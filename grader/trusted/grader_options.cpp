@@ -1,12 +1,12 @@
 // hw2-grade's command line (docs/grader.md): the options, their checks and the usage text.
+#include "grader_options.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <random>
 #include <string>
 #include <thread>
-
-#include "grader.hpp"
-#include "judge/graded_suite.hpp"
 
 namespace opspace::grading {
 
@@ -207,6 +207,34 @@ bool parse_grader_options(int argc, char** argv, GraderOptions& options, int& ex
     }
   }
   return true;
+}
+
+std::uint64_t drawn_seed() {
+  std::random_device device;
+  return (static_cast<std::uint64_t>(device()) << 20 ^ device()) % 1000000000ull + 1;
+}
+
+std::vector<const Problem*> chosen_problems(const std::vector<Problem>& suite, const std::string& only) {
+  std::vector<const Problem*> chosen;
+  for (const Problem& problem : suite)
+    if (only.empty() || problem.key == only) chosen.push_back(&problem);
+  return chosen;
+}
+
+GradingSettings grading_settings(const GraderOptions& options, const std::vector<const Problem*>& chosen,
+                                 const Account& account) {
+  GradingSettings settings;
+  settings.isolate = options.isolate;
+  for (const Problem* problem : chosen) settings.timeouts[problem->key] = timeout_of(options, problem->key);
+  settings.second_runner = options.second_runner;
+  settings.jobs = options.jobs > 0 ? options.jobs : jobs_by_default(options.isolate && account.uid != 0);
+  return settings;
+}
+
+ResultsFiles results_files(const GraderOptions& options, bool unprotected) {
+  return {options.gradescope_path, options.prairielearn_path, options.junit_path, options.html_path,
+          options.hidden,          options.hidden_as,         options.gradescope_format, options.seed,
+          unprotected};
 }
 
 }  // namespace opspace::grading

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "grader.hpp"
+#include "report/autograder_output.hpp"
 #include "report/report_html.hpp"
 #include "run_figure.hpp"
 #include "tests/support/gradescope_html.hpp"

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "grader.hpp"
+#include "report/autograder_output.hpp"
+#include "report/prairielearn_output.hpp"
 #include "report/raster.hpp"
 #include "report/report_html.hpp"
 

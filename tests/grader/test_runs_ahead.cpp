@@ -9,7 +9,7 @@
 #include <chrono>
 #include <thread>
 
-#include "judge/diagnosis.hpp"
+#include "run/recording.hpp"
 #include "pinned_run.hpp"
 #include "run/remote_api.hpp"
 #include "run/runner_process.hpp"

@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "grader.hpp"
+#include "report/autograder_output.hpp"
 #include "linked_api.hpp"
 #include "judge/mistakes.hpp"
 #include "build/library_answers.hpp"

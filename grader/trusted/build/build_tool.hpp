@@ -7,9 +7,17 @@
 #include <string>
 #include <vector>
 
-#include "build/runner_build.hpp"
+#include "sandbox/sandbox.hpp"
 
 namespace opspace::grading {
+
+/// Where and how to build.
+struct BuildSettings {
+  std::string cache_dir;   ///< built runners are kept here, by the hash of their inputs (the grader's alone)
+  Account account;         ///< when the grader is root: the account that compiles
+  bool isolate = true;     ///< the sandbox (false: debugging only)
+  double timeout = 180.0;  ///< seconds for each of compiling and linking
+};
 
 /// What a tool did.
 struct ToolResult {

@@ -12,42 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "common/fault.hpp"
+#include "build/build_tool.hpp"
 #include "build/library_answers.hpp"
+#include "build/toolchain.hpp"
+#include "common/fault.hpp"
 #include "sandbox/sandbox.hpp"
 
 namespace opspace::grading {
-
-/// How CMake compiles and links a runner (the file grader/CMakeLists.txt generates).
-struct Toolchain {
-  std::vector<std::string> compile;  ///< compiler and flags; the grader adds -c FILE -o OBJECT
-  std::vector<std::string> link;     ///< compiler and flags; the grader adds OBJECT, the inputs, -o
-  /// Per problem key: the link inputs after the object (the runner loop, the library).
-  std::vector<std::pair<std::string, std::vector<std::string>>> inputs;
-  std::vector<std::string> include_roots;  ///< folders a student's file may include from
-  std::vector<std::string> headers;        ///< what the compiler must see of this build (read-only)
-  std::vector<std::string> archives;       ///< what the linker must see of this build (read-only)
-  std::string nm;                          ///< the nm program
-  /// The compiler's LTO plugin, which nm is told to load instead of every plugin of
-  /// bfd-plugins/ (10 ms instead of 70 where clang's LLVMgold is there); empty: nm as it is.
-  std::string nm_plugin;
-  /// nm and its options before the grader's: {nm} or {nm, --plugin, nm_plugin}.
-  std::vector<std::string> nm_command() const;
-  /// Changes when any of the above changes, the grader is rebuilt, or a file under `headers`
-  /// is added, removed or touched.
-  std::string fingerprint;
-};
-
-/// Reads the toolchain file. Throws std::runtime_error naming the file and line on bad input.
-Toolchain load_toolchain(const std::string& path);
-
-/// Where and how to build.
-struct BuildSettings {
-  std::string cache_dir;   ///< built runners are kept here, by the hash of their inputs (the grader's alone)
-  Account account;         ///< when the grader is root: the account that compiles
-  bool isolate = true;     ///< the sandbox (false: debugging only)
-  double timeout = 180.0;  ///< seconds for each of compiling and linking
-};
 
 /// The outcome of building one problem's runner.
 struct BuiltRunner {

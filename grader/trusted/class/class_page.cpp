@@ -11,6 +11,7 @@
 #include <ostream>
 #include <set>
 
+#include "class/class_mistakes.hpp"
 #include "report/report_html.hpp"
 #include "common/student_text.hpp"
 
@@ -31,8 +32,6 @@ std::string points(double v) {
   std::snprintf(b, sizeof b, "%g", v);
   return b;
 }
-
-std::string test_key(const ClassTest& t) { return t.problem + " " + t.name; }
 
 // What the page calls student i: their folder's name, escaped where shown (a name is the
 // student's text), or "student i+1".
@@ -70,29 +69,6 @@ std::vector<std::string> test_order(const std::vector<ClassStudent>& students) {
     for (const ClassTest& t : s.tests)
       if (seen.insert(test_key(t)).second) order.push_back(test_key(t));
   return order;
-}
-
-struct MistakeRow {
-  std::string problem, mistake;
-  std::vector<std::size_t> students;
-  std::map<std::string, int> tests;  // test: how many students it cost
-};
-
-// The named mistakes, the most made first (then by problem and name): a student counts once.
-std::vector<MistakeRow> ranked_mistakes(const std::vector<ClassStudent>& students) {
-  std::map<std::pair<std::string, std::string>, MistakeRow> rows;
-  for (std::size_t i = 0; i < students.size(); ++i)
-    for (const ClassTest& t : students[i].tests) {
-      if (t.mistake.empty() || t.passed()) continue;
-      MistakeRow& row = rows[{t.problem, t.mistake}];
-      row.problem = t.problem, row.mistake = t.mistake;
-      if (row.students.empty() || row.students.back() != i) row.students.push_back(i);
-      ++row.tests[test_key(t)];
-    }
-  std::vector<MistakeRow> out;
-  for (auto& [key, row] : rows) out.push_back(std::move(row));
-  std::stable_sort(out.begin(), out.end(), [](const MistakeRow& a, const MistakeRow& b) { return a.students.size() > b.students.size(); });
-  return out;
 }
 
 std::string colour_of(const std::vector<MistakeRow>& ranked, const std::string& problem, const std::string& mistake) {

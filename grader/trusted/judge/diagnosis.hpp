@@ -1,6 +1,6 @@
 /// @file diagnosis.hpp
-/// Naming a student's mistake: the calls of a test are recorded (arguments and answers, as
-/// the protocol encodes them); when the test fails, they are replayed through the grader's
+/// Naming a student's mistake: the calls of a test are recorded (run/recording.hpp: arguments
+/// and answers, as the protocol encodes them); when the test fails, they are replayed through the grader's
 /// reference with each catalogued mistake of that test made (mistakes.hpp). A mistake that
 /// reproduces every recorded answer, where the reference does not, is the likely one.
 #pragma once
@@ -8,28 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "run/api.hpp"
 #include "judge/mistakes.hpp"
-#include "protocol/protocol.hpp"
+#include "run/recording.hpp"
 
 namespace opspace::grading {
-
-/// One call of a student's function during a test.
-struct Call {
-  protocol::Function function;
-  std::vector<unsigned char> arguments;  ///< encoded as the protocol encodes them
-  std::vector<unsigned char> answer;     ///< the student's value, encoded
-};
-
-/// The calls of one test: the first 32, then every 100th, at most 200 (a simulated run makes
-/// thousands; these span it).
-struct Recording {
-  std::vector<Call> calls;
-  long seen = 0;  ///< how many calls were made in all
-};
-
-/// A copy of `api` whose functions also record their calls in `recording`.
-Hw2Api recorded(const Hw2Api& api, Recording& recording);
 
 /// Whether every answer of `recording` is zero, as the untouched stubs' are (and none is
 /// missing): code not written yet, which no known mistake explains.

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "judge/grading.hpp"
+#include "judge/figure.hpp"
 
 namespace opspace::grading {
 

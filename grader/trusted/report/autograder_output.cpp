@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "report/class_record.hpp"
-#include "grader.hpp"
+#include "report/autograder_output.hpp"
 #include "report/raster.hpp"
 #include "report/report_html.hpp"
 #include "common/student_text.hpp"

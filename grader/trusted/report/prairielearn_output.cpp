@@ -11,7 +11,8 @@
 #include <sstream>
 #include <string>
 
-#include "grader.hpp"
+#include "report/autograder_output.hpp"
+#include "report/prairielearn_output.hpp"
 #include "report/raster.hpp"
 #include "report/report_html.hpp"
 #include "common/student_text.hpp"

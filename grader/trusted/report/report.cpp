@@ -8,12 +8,6 @@
 
 namespace opspace::grading {
 
-std::string format_points(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
 namespace {
 
 // What the student's side wrote (already escaped: student_text.hpp), each line behind "| " so
@@ -55,17 +49,6 @@ std::string replay_command(const GradedTest& test, std::uint64_t seed) {
   std::string command = "bash scripts/run " + test.replay + " --test " + bash_quoted(test.title);
   if (seed != 0) command += " --seed " + std::to_string(seed);
   return command;
-}
-
-ProblemResult grade(const Problem& problem, const Hw2Api& api) {
-  ProblemResult out;
-  out.problem = &problem;
-  out.results = run_tests(problem.tests, api);
-  for (const TestResult& r : out.results) {
-    out.score += r.score;
-    out.max_score += r.test->points;
-  }
-  return out;
 }
 
 bool is_hidden(const ProblemResult& problem, const TestResult& test, const std::vector<std::string>& hidden) {
@@ -143,6 +126,21 @@ void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
     out << "Where to start: open exercises/p" << first.key << ".cpp (" << first.title << "; guide problems/" << first.key
         << "/guide.md)\nand grade it alone: bash scripts/grade --problem " << first.key << "\n";
   }
+}
+
+void print_footer(std::ostream& out, double build_seconds, double grading_seconds, std::uint64_t seed, bool isolate,
+                  bool started, const Protections& protections) {
+  char times[200];
+  std::snprintf(times, sizeof times, "Built in %.1f s, graded in %.1f s (seed %llu: --seed %llu replays these inputs)\n",
+                build_seconds, grading_seconds, static_cast<unsigned long long>(seed),
+                static_cast<unsigned long long>(seed));
+  out << times;
+  if (!isolate) {
+    out << "Sandbox: off (--no-isolation)\n";
+  } else if (started && !protections.missing().empty()) {
+    out << "Sandbox: these protections were not available here: " << protections.missing() << " (docs/grader.md)\n";
+  }
+  out << std::flush;
 }
 
 }  // namespace opspace::grading

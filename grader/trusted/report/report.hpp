@@ -1,5 +1,6 @@
 /// @file report.hpp
-/// Grading a problem and printing the score table a student reads.
+/// The score table a student reads, printed from the problems' results (judge/problem_result.hpp),
+/// and what the other reports share of it: which tests are hidden, a test's status, its replay.
 #pragma once
 
 #include <cstdint>
@@ -7,27 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "judge/graded_suite.hpp"
+#include "judge/problem_result.hpp"
+#include "sandbox/sandbox.hpp"
 
 namespace opspace::grading {
-
-/// The results of one problem's tests, with the points earned and available.
-struct ProblemResult {
-  const Problem* problem = nullptr;  ///< the problem graded
-  std::vector<TestResult> results;   ///< one per test, in the problem's order
-  double score = 0.0;                ///< sum of the results' scores
-  double max_score = 0.0;            ///< sum of the tests' points
-  std::string failure;   ///< empty, or why the problem could not be graded (its file does not compile)
-  bool grader_fault = false;  ///< `failure` is the grader's own (fault.hpp), not the submission's
-  std::string warnings;  ///< the compiler's warnings on the problem's file (shown, never fatal)
-  std::vector<std::string> notes;  ///< other things the student should know (oracle calls)
-};
-
-/// Points as the report and the grader's notes write them ("%g": 3, 2.5, 0.25).
-std::string format_points(double value);
-
-/// Runs every test of `problem` against `api`.
-ProblemResult grade(const Problem& problem, const Hw2Api& api);
 
 /// Whether the student is kept from seeing `test` of `problem` (--hidden): its name, with the
 /// problem's key in front ("1b iii. in simulation ..."), contains one of `hidden`.
@@ -58,5 +42,10 @@ std::string replay_command(const GradedTest& test, std::uint64_t seed);
 /// results.json and the gradebook.
 void print_report(std::ostream& out, const std::vector<ProblemResult>& problems,
                   const std::vector<std::string>& hidden = {}, std::uint64_t seed = 0);
+
+/// The lines under the report: the times, the seed that replays the inputs, and what of the
+/// sandbox did not hold where a runner started (`started`: `protections` are its).
+void print_footer(std::ostream& out, double build_seconds, double grading_seconds, std::uint64_t seed, bool isolate,
+                  bool started, const Protections& protections);
 
 }  // namespace opspace::grading

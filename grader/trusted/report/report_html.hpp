@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "report/html_text.hpp"
 #include "report/report.hpp"
 
 namespace opspace::grading {
@@ -41,8 +42,6 @@ struct SmallCurve {
 std::string svg_small_multiple(const RunFigure& frame, const std::vector<SmallCurve>& curves, double width,
                                double height);
 
-/// `s` for an HTML element or a quoted attribute: & < > " ' escaped (student_text.hpp).
-std::string html_text(const std::string& s);
 
 /// The same figure as a PNG file's bytes (raster.hpp): the picture results.json embeds, where
 /// an inline SVG would not survive Gradescope's sanitizer. Tick labels are drawn; every other

@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "judge/diagnosis.hpp"
+#include "run/recording.hpp"
 #include "run/runner_process.hpp"
 
 namespace opspace::grading {

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "common/process_ended.hpp"
@@ -216,6 +217,13 @@ unsigned long long address_space_within_budget(unsigned long long own) {
 unsigned long long machine_memory() {
   const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
   return pages > 0 && size > 0 ? static_cast<unsigned long long>(pages) * static_cast<unsigned long long>(size) : 0;
+}
+
+GradingBudget grading_budget(unsigned long long memory_mib) {
+  GradingBudget budget;
+  budget.memory_bytes = memory_mib > 0 ? memory_mib << 20 : machine_memory();
+  budget.processes = (64 + 16) * static_cast<unsigned long long>(std::max(1u, std::thread::hardware_concurrency()));
+  return budget;
 }
 
 }  // namespace opspace::grading

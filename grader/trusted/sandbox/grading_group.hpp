@@ -58,4 +58,9 @@ unsigned long long address_space_within_budget(unsigned long long own);
 /// The machine's memory (bytes), the default budget of a grading that runs alone.
 unsigned long long machine_memory();
 
+/// What a grading may use: `memory_mib` (--memory), else the machine's memory; processes for the
+/// builds running at once (one per core, each under its account's 64, build_tool.cpp) and as
+/// many runners (16 each, runner_process.cpp).
+GradingBudget grading_budget(unsigned long long memory_mib);
+
 }  // namespace opspace::grading

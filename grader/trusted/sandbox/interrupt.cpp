@@ -3,43 +3,21 @@
 #include <pthread.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <csignal>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <mutex>
-#include <set>
-#include <stdexcept>
 #include <system_error>
 #include <thread>
-#include <vector>
 
+#include "common/temporary_folder.hpp"
 #include "sandbox/sandbox.hpp"
 
 namespace opspace::grading {
 
 namespace {
 
-std::mutex& folders_lock() {
-  static std::mutex lock;
-  return lock;
-}
-
-std::set<std::string>& folders() {
-  static std::set<std::string> tracked;
-  return tracked;
-}
-
-// Runs on the watching thread, in ordinary (not signal-handler) context.
 [[noreturn]] void stop_and_clean_up(int signal_number) {
   kill_live_programs();
-  std::vector<std::string> left;
-  {
-    const std::lock_guard<std::mutex> hold(folders_lock());
-    left.assign(folders().begin(), folders().end());
-  }
-  for (const std::string& folder : left) {
+  for (const std::string& folder : tracked_folders()) {
     std::error_code ignored;
     std::filesystem::remove_all(folder, ignored);
   }
@@ -49,29 +27,6 @@ std::set<std::string>& folders() {
 }
 
 }  // namespace
-
-void track_folder(const std::string& path) {
-  const std::lock_guard<std::mutex> hold(folders_lock());
-  folders().insert(path);
-}
-
-void forget_folder(const std::string& path) {
-  const std::lock_guard<std::mutex> hold(folders_lock());
-  folders().erase(path);
-}
-
-TemporaryFolder::TemporaryFolder(const std::string& prefix) {
-  std::string pattern = prefix + std::to_string(getpid()) + "-XXXXXX";
-  if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a folder " + pattern + ": " + std::strerror(errno));
-  path_ = pattern;
-  track_folder(path_);
-}
-
-TemporaryFolder::~TemporaryFolder() {
-  std::error_code ignored;
-  std::filesystem::remove_all(path_, ignored);
-  forget_folder(path_);
-}
 
 void clean_up_when_interrupted() {
   sigset_t watched;

@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "sandbox/interrupt.hpp"
+#include "common/temporary_folder.hpp"
 #include "sandbox/sandbox_plan.hpp"
 
 namespace opspace::grading::sandbox_internal {
@@ -94,7 +94,7 @@ std::string root_mount_point() {
   static std::mutex lock;
   const std::lock_guard<std::mutex> hold(lock);
   if (!g_root[0]) {
-    // The grader's pid in the name, as in TemporaryFolder's (interrupt.hpp).
+    // The grader's pid in the name, as in TemporaryFolder's (common/temporary_folder.hpp).
     std::string pattern = "/tmp/opspace-sandbox-" + std::to_string(getpid()) + "-XXXXXX";
     if (!mkdtemp(pattern.data()))
       throw std::runtime_error(std::string("cannot create a sandbox folder in /tmp: ") + std::strerror(errno));

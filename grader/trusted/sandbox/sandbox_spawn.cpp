@@ -23,7 +23,6 @@
 #include <stdexcept>
 
 #include "sandbox/grading_group.hpp"
-#include "sandbox/interrupt.hpp"
 #include "sandbox/sandbox_plan.hpp"
 #include "sandbox/sandbox_seccomp.hpp"
 
@@ -185,20 +184,6 @@ pid_t attempt(ChildPlan& plan, const SandboxSpec& spec, unsigned long flags, std
 
 }  // namespace
 
-std::string Protections::missing() const {
-  std::string out;
-  auto add = [&out](bool on, const char* what) {
-    if (!on) out += (out.empty() ? "" : ", ") + std::string(what);
-  };
-  add(own_user, "a separate user");
-  add(pid_namespace, "a PID namespace");
-  add(no_network, "a network namespace");
-  add(private_files, "a private view of the files");
-  add(seccomp, "the system-call filter");
-  add(limits, "resource limits");
-  return out;
-}
-
 Sandboxed spawn(const SandboxSpec& spec) {
   if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/')
     throw std::invalid_argument("sandbox: the program needs an absolute path");
@@ -243,34 +228,6 @@ Sandboxed spawn(const SandboxSpec& spec) {
     failure = why;
   }
   throw std::runtime_error("sandbox: cannot " + failure + " (" + spec.argv[0] + ")");
-}
-
-}  // namespace opspace::grading
-
-namespace opspace::grading {
-
-bool sandbox_complete(const Account& account, std::string& why) {
-  const TemporaryFolder folder("/tmp/opspace-probe-");
-  SandboxSpec spec;
-  spec.argv = {"/usr/bin/true"};
-  spec.work_dir = folder.path();
-  spec.account = account;
-  Sandboxed program;
-  try {
-    program = spawn(spec);
-  } catch (const std::exception& e) {
-    why = e.what();
-    return false;
-  }
-  int status = 0;
-  if (!wait_until(program, std::chrono::steady_clock::now() + std::chrono::seconds(30), status)) status = kill_all(program);
-  Protections on = program.protections;
-  // Without root, the user namespace is the separate identity: no uid of the grader's outside.
-  if (geteuid() != 0) on.own_user = on.pid_namespace;
-  why = on.missing();
-  if (why.empty() && !(WIFEXITED(status) && WEXITSTATUS(status) == 0))
-    why = "a trial program " + describe_wait_status(status);
-  return why.empty();
 }
 
 }  // namespace opspace::grading
