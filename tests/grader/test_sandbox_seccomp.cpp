@@ -26,7 +26,7 @@ namespace {
 using Results = std::map<std::string, int>;
 
 // The probe's environment: under AddressSanitizer (the asan preset) its leak check at exit would
-// need ptrace, which the filter refuses (the grader's runners get the same, grader.cpp).
+// need ptrace, which the filter refuses (the grader's runners get the same, grader/trusted/judge/grade_problems.cpp).
 const char* const kProbeEnvironment = "ASAN_OPTIONS=detect_leaks=0";
 
 std::string read_all(int fd) {

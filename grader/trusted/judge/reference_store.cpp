@@ -17,7 +17,7 @@ namespace opspace::grading {
 
 namespace {
 
-// Problems graded at once (grader.cpp) share the kept series and the store: every look-up and
+// Problems graded at once (grade_problems.cpp) share the kept series and the store: every look-up and
 // insertion holds this lock; a run being made does not, so two problems' runs overlap.
 std::mutex& kept_lock() {
   static std::mutex lock;

@@ -33,7 +33,7 @@ void bind(std::function<R(A...)>& slot, RunnerProcess& runner, Function function
 }  // namespace
 
 Hw2Api remote_api(const std::string& key, RunnerProcess& runner) {
-  static std::atomic<std::uint64_t> next_identity{1000};  // problems are graded at once (grader.cpp)
+  static std::atomic<std::uint64_t> next_identity{1000};  // problems are graded at once (judge/grade_problems.cpp)
   Hw2Api api{};
   api.identity = ++next_identity;
   for_each_function(api, [&](Function function, auto& slot) {

@@ -1,4 +1,4 @@
-// The sandboxed child, from clone() to execve() (sandbox.cpp starts it). Only system calls: the
+// The sandboxed child, from clone() to execve() (sandbox_spawn.cpp starts it). Only system calls: the
 // grader may be the parent of several sandboxed programs, and the child must not depend on the
 // C library's state (locks, caches) inherited from it. child_main() keeps its steps in an order
 // that matters: the filter is received before the descriptors are closed (its pipe is one); the
@@ -57,7 +57,7 @@ bool read_exact(int fd, void* buffer, std::size_t size) {
   return true;
 }
 
-// The filter the parent built for this child's pid (attempt() in sandbox.cpp).
+// The filter the parent built for this child's pid (attempt() in sandbox_spawn.cpp).
 void child_receive_filter(ChildPlan& plan) {
   close(plan.filter_write_fd);
   std::uint32_t count = 0;

@@ -2,7 +2,7 @@
 // child does between clone() and execve(): the parent prepares all of it before clone() (the
 // child then makes only system calls, sandbox_child.cpp says why), and each file of the
 // sandbox adds its mechanism's part of the plan and the child's step that applies it:
-//   sandbox.cpp           spawn(): the plan, the namespaces tried, clone(), the filter sent
+//   sandbox_spawn.cpp     spawn(): the plan, the namespaces tried, clone(), the filter sent
 //   sandbox_child.cpp     the child's steps, in their order, up to execve()
 //   sandbox_user.cpp      credentials: the ids of a user namespace, the switch to the sandbox user
 //   sandbox_files.cpp     the private view of the files: the new root and its mounts
