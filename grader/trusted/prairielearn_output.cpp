@@ -12,7 +12,7 @@
 #include <string>
 
 #include "grader.hpp"
-#include "raster.hpp"
+#include "plot_png.hpp"
 #include "report_html.hpp"
 #include "student_text.hpp"
 
@@ -86,9 +86,11 @@ void write_prairielearn(std::ostream& out, const std::vector<ProblemResult>& pro
       // A failed simulated test's runs as pictures (PrairieLearn shows images[] below the text).
       if (r.score < r.test->points && !r.not_written && !r.figures.empty()) {
         Json images = Json::array();
-        for (const RunFigure& f : r.figures)
-          images.push_back(Json{{"label", figure_caption(f)}, {"url", "data:image/png;base64," + base64(png_plot(f))}});
-        test["images"] = std::move(images);
+        for (const RunFigure& f : r.figures) {
+          const std::string png = png_plot(f);  // empty in a grader built without cairo
+          if (!png.empty()) images.push_back(Json{{"label", figure_caption(f)}, {"url", "data:image/png;base64," + base64(png)}});
+        }
+        if (!images.empty()) test["images"] = std::move(images);
       }
       tests.push_back(std::move(test));
     }

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "grader.hpp"
-#include "raster.hpp"
+#include "plot_png.hpp"
 #include "report_html.hpp"
 
 namespace grading = opspace::grading;
