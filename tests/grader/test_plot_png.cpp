@@ -163,7 +163,7 @@ TEST_CASE("a figure of hostile numbers and texts is drawn promptly, its legend a
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   keep(png, "hostile.png");
   // Measured: 0.07 s for the figure above (fontconfig's start included), 0.08 s for this one
-  // (its million points each looked at once, 50000 of them drawn). 3 s: tens of times that,
+  // (one in 50 of its million points looked at: plot_png.cpp's kMaxPoints). 3 s: tens of times that,
   // for a loaded machine, and far from the endless loop of issue 59's tick labels.
   CHECK(seconds < 3.0);
   const Picture p = decode(png);
