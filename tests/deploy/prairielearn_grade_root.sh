@@ -6,7 +6,8 @@
 # OPSPACE_PL_ROOT; no OPSPACE_PL_GRADER either when GRADER is the release build's, the path the
 # entrypoint takes by itself). Problem 1b's question:
 #   the untouched stub -> 0; the reference -> 1, timed (PrairieLearn's default timeout is 30 s,
-#   info.json's 60 s); a file that does not compile -> 0, the compiler's error in the message;
+#   info.json's 60 s); a known mistake (the 1b mutant) -> between, its plots as images[], drawn
+#   without a word from fontconfig; a file that does not compile -> 0, the compiler's error in the message;
 #   no file -> not gradable; tests/tamper/cases/detached.cpp, a detached grandchild that rewrites
 #   /grade/results/results.json for 8 s after the grader has written it -> 0, and 9 s later
 #   results.json is the grader's still and the grandchild's marker was never written.
@@ -85,6 +86,11 @@ check reference -DSCORE=1 -DPOINTS="$points"
 # PrairieLearn's default timeout per question; info.json asks 60 s, the entrypoint stops at 50.
 [ $((SECONDS - start)) -le 30 ] || echo "NOTE: problem $key's reference took more than PrairieLearn's default 30 s here"
 
+# A known mistake: its failed simulated tests' pictures (cairo's, in the grader) as images[].
+grade mistake "$repo/tests/mutants/p1b_part3_pinv.cpp:p$key.cpp"
+check mistake -DPOINTS="$points" -DIMAGES=ON -DSCORE=BETWEEN
+! grep -i fontconfig "$work/mistake.log" || fail "mistake: fontconfig complained while the pictures were drawn"
+
 printf 'this is not C++\n' > "$work/broken.cpp"
 grade broken "$work/broken.cpp:p$key.cpp"
 check broken -DSCORE=0 -DPOINTS="$points" "-DMESSAGE=p$key\\.cpp:1:"
@@ -102,4 +108,4 @@ sleep 9  # the grandchild's 8 tries, one a second, and one more
   fail "detached: results.json changed after the entrypoint ended: $(head -c 300 "$work/detached/results/results.json")"
 [ ! -e "$work/pwned" ] || fail "detached: the grandchild outlived the grading (it wrote $work/pwned)"
 check detached -DSCORE=0 -DPOINTS="$points"
-echo "in a private mount namespace with /grade bind-mounted, the entrypoint grades the stub 0, the reference 1, a broken file 0, refuses a missing file, and a detached grandchild cannot rewrite its results"
+echo "in a private mount namespace with /grade bind-mounted, the entrypoint grades the stub 0, the reference 1, a mistake with its pictures, a broken file 0, refuses a missing file, and a detached grandchild cannot rewrite its results"
