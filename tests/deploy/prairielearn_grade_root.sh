@@ -14,7 +14,7 @@
 # The host's /grade (made empty as the mount point when missing, removed again) is empty after
 # each: the bind mount stayed in its namespace. Where unshare -m is not allowed (not root, a
 # container without CAP_SYS_ADMIN), it exits 77, ctest's SKIP_RETURN_CODE, saying why.
-# Seen to fail: with --no-isolation among the grader options (deploy/grader-options; the grader
+# Seen to fail: with --no-isolation among the grader options (the bundle's grader-options; the grader
 # refuses it as root, the stub's results.json is not gradable); the mistake's case, before the
 # entrypoint's key check was a loop (printf | grep -q under pipefail refused problem 1b as
 # unknown, at random). Seen skipped by ctest with an unshare that fails.
