@@ -40,11 +40,17 @@ fi
 source "$REPO/scripts/setup.sh"
 # shellcheck source=/dev/null
 source "$REPO/scripts/secret_side.sh"  # what step 5 removes, by place (scripts/handout reads it too)
-packages=(libtinyxml-dev util-linux)
+# cairo and DejaVu Sans draw each failed simulated test's picture in results.json
+# (OPSPACE_GRADER_PICTURE_PACKAGES: libcairo2-dev, libpng-dev, fonts-dejavu-core), named here whatever the
+# bundle holds: Gradescope's and PrairieLearn's students see them.
+packages=(libtinyxml-dev util-linux "${OPSPACE_GRADER_PICTURE_PACKAGES[@]}")
 # Not the benchmarks' library, nor the live lab's server, nor yaml-cpp (an export's metadata is read by
 # scripts/regrade, never by the bundle): the bundle grades one submission; it serves no page.
 for p in "${OPSPACE_PACKAGES[@]}"; do
-  case "$p" in libbenchmark-dev | libcpp-httplib-dev | libyaml-cpp-dev) ;; *) packages+=("$p") ;; esac
+  case "$p" in
+    libbenchmark-dev | libcpp-httplib-dev | libyaml-cpp-dev) ;;
+    *) [[ " ${packages[*]} " == *" $p "* ]] || packages+=("$p") ;;
+  esac
 done
 mapfile -t missing < <(opspace_missing "${packages[@]}")
 if [ ${#missing[@]} -gt 0 ]; then

@@ -13,12 +13,21 @@ OPSPACE_BUILD="$OPSPACE_ROOT/build/release"
 # (scripts/regrade, hw2-class; the bundle leaves it out too).
 OPSPACE_PACKAGES=(g++ make cmake ninja-build pkg-config libeigen3-dev doctest-dev libbullet-dev
                   liburdfdom-dev libbenchmark-dev libssl-dev libseccomp-dev nlohmann-json3-dev
-                  libcpp-httplib-dev zlib1g-dev libyaml-cpp-dev)
+                  libcpp-httplib-dev libyaml-cpp-dev)
+# The autograder's pictures: cairo draws each failed simulated test's plot into results.json,
+# in DejaVu Sans, and libpng writes it (grader/trusted/report/plot_png.hpp). Where the reference is
+# (the instructor's repository, the Gradescope bundle); a student handout has no simulated test
+# and its grader draws no picture, so a student does not install them (CMakeLists.txt).
+OPSPACE_GRADER_PICTURE_PACKAGES=(libcairo2-dev libpng-dev fonts-dejavu-core)
+if [ -d "$OPSPACE_ROOT/solutions" ]; then
+  OPSPACE_PACKAGES+=("${OPSPACE_GRADER_PICTURE_PACKAGES[@]}")
+fi
 # The pictures of a run (docs/visuals.md): gnuplot draws the plots (fonts for its PNGs), node
 # and npm bundle the 3D replay viewer at build time (npm fetches over TLS: ca-certificates).
 # Optional: if they cannot be installed, the build, the grader and the programs still work and
 # say which picture they skipped.
-OPSPACE_OPTIONAL_PACKAGES=(gnuplot-nox fonts-dejavu-core ca-certificates)
+OPSPACE_OPTIONAL_PACKAGES=(gnuplot-nox ca-certificates)
+[ -d "$OPSPACE_ROOT/solutions" ] || OPSPACE_OPTIONAL_PACKAGES+=(fonts-dejavu-core)  # else required, above
 # Only the tests need a browser: Chromium runs the replay and explorer tests (scripts/test
 # installs it; a student's scripts/grade does not download it). Emscripten (em++) compiles the
 # library to WebAssembly for the explorer page (docs/visuals.md). Optional too: without them

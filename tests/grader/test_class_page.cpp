@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "class/class_page.hpp"
+#include "report/plot_png.hpp"
 #include "report/report_html.hpp"
 
 namespace grading = opspace::grading;

@@ -10,7 +10,7 @@
 
 #include "report/autograder_output.hpp"
 #include "report/prairielearn_output.hpp"
-#include "report/raster.hpp"
+#include "report/plot_png.hpp"
 #include "report/report_html.hpp"
 
 namespace grading = opspace::grading;

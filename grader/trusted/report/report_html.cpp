@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "report/html_text.hpp"
-#include "report/raster.hpp"
 #include "common/student_text.hpp"
 
 namespace opspace::grading {
@@ -260,33 +259,24 @@ std::string svg_small_multiple(const RunFigure& frame, const std::vector<SmallCu
   return out.str();
 }
 
-std::string png_plot(const RunFigure& f) {
-  enum Colour : std::uint8_t { kPaper, kShade, kGrid, kAxis, kStudent, kReference, kBound, kInk };
-  Raster r(static_cast<int>(kWidth), static_cast<int>(kHeight),
-           {0xffffff, 0xf2f2f2, 0xe6e6e6, 0x888888, 0xd62728, 0x1f77b4, 0x2ca02c, 0x222222});
-  const double t_end = end_time(f);
-  const Range y = y_range(f);
-  const double h = kHeight - kTop - kBottom;
-  const auto px = [&](double t) { return x_at(t, t_end, Box{}); };
-  const auto py = [&](double v) { return kTop + h * (1.0 - y.at(v)); };
-  if (judged_from(f, t_end) > 0.0) r.rect(kLeft, kTop, px(judged_from(f, t_end)), kTop + h, kShade);
-  for (const double t : linear_ticks(0.0, t_end, 8)) r.number(num(t, 4), px(t) - 3.0 * num(t, 4).size(), kHeight - kBottom + 12, kInk);
-  for (const double v : y_ticks(y)) {
-    r.line(kLeft, py(v), kWidth - kRight, py(v), kGrid);
-    r.number(num(v, 4), kLeft - 6, py(v), kInk, true);
-  }
-  r.line(kLeft, kTop, kLeft, kTop + h, kAxis);
-  r.line(kLeft, kTop + h, kWidth - kRight, kTop + h, kAxis);
-  if (std::isfinite(f.bound)) r.line(kLeft, py(f.bound * f.unit_scale), kWidth - kRight, py(f.bound * f.unit_scale), kBound, 2, 6);
-  const auto curve = [&](const Series& s, Colour colour) {
-    for (std::size_t k = 1; k < s.t.size() && k < s.v.size(); ++k)
-      if (std::isfinite(s.v[k - 1]) && std::isfinite(s.v[k]))
-        r.line(px(s.t[k - 1]), py(s.v[k - 1] * f.unit_scale), px(s.t[k]), py(s.v[k] * f.unit_scale), colour, 2);
-  };
-  curve(f.reference, kReference);
-  curve(f.student, kStudent);
-  return r.png();
+double PlotScales::x(double t) const { return std::clamp(t / t_end, -1.0, 2.0); }
+
+double PlotScales::y(double v) const {
+  return std::clamp(Range{y_lo, y_hi, y_clipped, y_log}.at(v), 0.0, 1.0);
 }
+
+PlotScales plot_scales(const RunFigure& f) {
+  PlotScales s;
+  s.t_end = end_time(f);
+  s.judged_from = judged_from(f, s.t_end);
+  const Range y = y_range(f);
+  s.y_lo = y.lo, s.y_hi = y.hi, s.y_log = y.log, s.y_clipped = y.clipped;
+  s.t_ticks = linear_ticks(0.0, s.t_end, 8);  // svg_plot's 8
+  s.y_ticks = y_ticks(y);
+  return s;
+}
+
+std::string tick_label(double v) { return num(v, 4); }
 
 std::string run_table(const RunFigure& f) {
   if (f.student.t.empty()) return "";

@@ -43,10 +43,25 @@ std::string svg_small_multiple(const RunFigure& frame, const std::vector<SmallCu
                                double height);
 
 
-/// The same figure as a PNG file's bytes (raster.hpp): the picture results.json embeds, where
-/// an inline SVG would not survive Gradescope's sanitizer. Tick labels are drawn; every other
-/// text (the quantity, its unit, the key) is the caption's.
-std::string png_plot(const RunFigure& figure);
+/// The scales of `figure`'s plot as svg_plot() draws them, for the same figure drawn elsewhere
+/// (png_plot(), plot_png.hpp): both label the same ticks. Every number here is finite.
+struct PlotScales {
+  double t_end = 1.0;        ///< the time at the right edge (s), positive
+  double judged_from = 0.0;  ///< where the check starts reading the run (s), within [0, t_end]
+  double y_lo = 0.0, y_hi = 1.0;  ///< the value axis's range (shown units)
+  bool y_log = false;        ///< a logarithmic value axis (y_lo > 0)
+  bool y_clipped = false;    ///< the student's run goes above y_hi
+  std::vector<double> t_ticks, y_ticks;  ///< the labelled values, kMaxTicks (12) at most each
+  /// Where time t lies across the plot: 0 its left edge, 1 its right, clamped to [-1, 2].
+  double x(double t) const;
+  /// Where shown value v lies up the plot: 0 its bottom, 1 its top, clamped to [0, 1]
+  /// (v finite; the caller leaves out what is not).
+  double y(double v) const;
+};
+PlotScales plot_scales(const RunFigure& figure);
+
+/// A tick's label as the page's axes write it (4 significant digits).
+std::string tick_label(double v);
 
 /// "t (s) | yours | reference" rows of `figure` at the times that matter (the run's start, the
 /// start of what the check reads, the student's extreme there, the end): for results.json,
