@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # How many compiles setup.sh runs at once, and how GCC's collector is set for them, from the
 # memory and CPU the image build really has (sourced by deploy/setup.sh; tested by
 # tests/deploy/build_resources.sh). Gradescope gives a container 768 MB and half a CPU by default,
@@ -9,22 +10,25 @@
 #   opspace_cpus         the CPUs it may use: nproc, lowered by a CPU quota (v2 cpu.max, v1
 #                        cpu.cfs_quota_us / cpu.cfs_period_us) rounded up
 #   opspace_build_plan MEMORY_KIB CPUS
-#                        prints "JOBS HEAPSIZE_KIB EXPAND PROOF_JOBS": the build's parallelism,
-#                        GCC's ggc-min-heapsize and ggc-min-expand for our units (EXPAND
-#                        "default": GCC's own), and how many proof tests run at once
+#                        prints "JOBS HEAPSIZE_KIB EXPAND UNITY PROOF_JOBS": the build's
+#                        parallelism, GCC's ggc-min-heapsize and ggc-min-expand for our units
+#                        (EXPAND "default": GCC's own), OPSPACE_UNITY_BUILD (ON or OFF), and how
+#                        many proof tests run at once
 #
 # OPSPACE_CGROUP_ROOT (default /sys/fs/cgroup), OPSPACE_PROC_ROOT (default /proc) and
 # OPSPACE_NPROC let the test point the readers at a made-up machine.
 
-# The numbers (measured with g++ 11 and 12 on the bundle's largest units, docs/instructor.md,
-# "Gradescope's memory and CPU"):
-# - With the collector from 1 GB on (the top CMakeLists.txt's default), the largest unit peaks near
-#   1.15 GB: a compile is given 1.5 GiB.
+# The numbers, measured with g++ 11 on the library's two unity units and on their files one by
+# one (docs/instructor.md, "Gradescope's memory and CPU"):
+# - With the collector from 1 GB on (the top CMakeLists.txt's default) the library's simulation
+#   unit peaks at 970 MB (1147 MB with g++ 12 for the largest, docs/performance.md): a compile
+#   is given 1.5 GiB.
 opspace_big_job_kib=$((1536 * 1024))
-# - With the collector from 64 MB on and at each 20 % of growth (GCC's defaults: 128 MB and 100 %
-#   on a machine of 1 GB and more, which a container's host always is), the same unit peaks near
-#   OPSPACE_SMALL_PEAK; a compile is given 640 MiB, the rest of 768 MB being for the shell, ninja,
-#   the linker's start and the kernel's page cache of the headers.
+# - Below that, the grade path's libraries are compiled one unit per file (OPSPACE_UNITY_BUILD
+#   OFF) and GCC collects from 64 MB on and at each 20 % of growth: the same unit whole peaked at
+#   716 MB even so (802 MB with GCC's defaults, 661 MB collecting from 32 MB at each 10 %), its
+#   largest file alone at 441 MB. A compile is given 640 MiB: under 768 MB, one at a time, with
+#   room for ninja, the shell and the kernel's cache of the headers.
 opspace_small_heap_kib=65536
 opspace_small_expand=20
 opspace_small_job_kib=$((640 * 1024))
@@ -100,13 +104,13 @@ opspace_cpus() {
 }
 
 opspace_build_plan() {
-  local memory=$1 cpus=$2 jobs heap=1048576 expand=default proof
+  local memory=$1 cpus=$2 jobs heap=1048576 expand=default unity=ON proof
   [ "$cpus" -ge 1 ] || cpus=1
   jobs=$((memory / opspace_big_job_kib))
   if [ "$jobs" -lt 1 ]; then
-    # Not even one compile with the collector late: GCC collects early, and as many compiles
-    # run as fit at their smaller peak.
-    heap=$opspace_small_heap_kib expand=$opspace_small_expand
+    # Not even one compile with the collector late: a unit per file, GCC collecting early, and
+    # as many compiles as fit at their smaller peak.
+    heap=$opspace_small_heap_kib expand=$opspace_small_expand unity=OFF
     jobs=$((memory / opspace_small_job_kib))
   fi
   [ "$jobs" -le "$cpus" ] || jobs=$cpus
@@ -115,5 +119,5 @@ opspace_build_plan() {
   proof=$((memory / opspace_proof_job_kib))
   [ "$proof" -le $((2 * cpus)) ] || proof=$((2 * cpus))
   [ "$proof" -ge 1 ] || proof=1
-  printf '%s %s %s %s\n' "$jobs" "$heap" "$expand" "$proof"
+  printf '%s %s %s %s %s\n' "$jobs" "$heap" "$expand" "$unity" "$proof"
 }

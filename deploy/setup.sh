@@ -64,21 +64,21 @@ if [ -n "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]; then
   fi
 fi
 # As many compiles at once, and GCC's collector set, as the memory the image build has allows:
-# under Gradescope's default 768 MB, one compile at a time whose collector runs early (two with
-# the collector from 1 GB on needed 2.3 GB and thrashed there). deploy/build_resources.sh says how,
+# under Gradescope's default 768 MB, one compile at a time, one unit per file, GCC's collector
+# running early (two unity units with the collector from 1 GB on need 2 GB and thrashed there). deploy/build_resources.sh says how,
 # docs/instructor.md what was measured. OPSPACE_SETUP_MEMORY_KIB and OPSPACE_SETUP_CPUS replace
 # what it reads (a test's made-up machine).
 # shellcheck source=/dev/null
 source "$REPO/deploy/build_resources.sh"
 memory_kib=${OPSPACE_SETUP_MEMORY_KIB:-$(opspace_memory_kib)}
 cpus=${OPSPACE_SETUP_CPUS:-$(opspace_cpus)}
-read -r jobs heap expand proof_jobs < <(opspace_build_plan "$memory_kib" "$cpus")
+read -r jobs heap expand unity proof_jobs < <(opspace_build_plan "$memory_kib" "$cpus")
 shown_expand="$expand %"
 if [ "$expand" = default ]; then expand="" shown_expand="GCC's default"; fi
-say "memory $((memory_kib / 1024)) MiB, $cpus CPU(s): $jobs compile(s) at once, GCC's ggc-min-heapsize $heap KiB and ggc-min-expand $shown_expand; $proof_jobs proof test(s) at once"
+say "memory $((memory_kib / 1024)) MiB, $cpus CPU(s): $jobs compile(s) at once, GCC's ggc-min-heapsize $heap KiB and ggc-min-expand $shown_expand, unity units $unity; $proof_jobs proof test(s) at once"
 cd "$REPO"
 cmake --preset release -DOPSPACE_BUILD_BENCH=OFF -DOPSPACE_BUILD_REPLAY=OFF -DOPSPACE_BUILD_LIVE=OFF \
-  -DOPSPACE_GGC_MIN_HEAPSIZE="$heap" -DOPSPACE_GGC_MIN_EXPAND="$expand" > "$ROOT/setup-configure.log" ||
+  -DOPSPACE_GGC_MIN_HEAPSIZE="$heap" -DOPSPACE_GGC_MIN_EXPAND="$expand" -DOPSPACE_UNITY_BUILD="$unity" > "$ROOT/setup-configure.log" ||
   { cat "$ROOT/setup-configure.log"; fail "cmake could not configure the build"; }
 say "building the grader (log: $ROOT/setup-build.log)"
 cmake --build "$BUILD" --parallel "$jobs" --target hw2-grade hw2-grade-sol test_graded_suite deny_namespaces hw2-p1-part3-pinv > "$ROOT/setup-build.log" 2>&1 ||

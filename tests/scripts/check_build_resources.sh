@@ -13,20 +13,20 @@ expect() {  # expect WHAT GOT WANTED
 }
 mib=1024  # KiB in a MiB
 
-# --- the plan: "JOBS HEAPSIZE_KIB EXPAND PROOF_JOBS" ------------------------------------------
-# Gradescope's default, 768 MB and half a CPU (a quota of half rounds up to 1): one compile, the
-# collector early, one proof test (two gradings of 347 MB each would not fit).
-expect "768 MB, 1 CPU" "$(opspace_build_plan $((768 * mib)) 1)" "1 65536 20 1"
+# --- the plan: "JOBS HEAPSIZE_KIB EXPAND UNITY PROOF_JOBS" ------------------------------------------
+# Gradescope's default, 768 MB and half a CPU (a quota of half rounds up to 1): one compile, a
+# unit per file, the collector early, one proof test (two gradings of 347 MB each would not fit).
+expect "768 MB, 1 CPU" "$(opspace_build_plan $((768 * mib)) 1)" "1 65536 20 OFF 1"
 # 768 MB with 2 CPUs still compiles one at a time: two early-collecting compiles need 1280 MiB.
-expect "768 MB, 2 CPUs" "$(opspace_build_plan $((768 * mib)) 2)" "1 65536 20 1"
+expect "768 MB, 2 CPUs" "$(opspace_build_plan $((768 * mib)) 2)" "1 65536 20 OFF 1"
 # 1.4 GiB: still under one late-collecting compile's 1.5 GiB; two early ones fit (2 x 640 MiB).
-expect "1.4 GiB, 2 CPUs" "$(opspace_build_plan $((1434 * mib)) 2)" "2 65536 20 3"
+expect "1.4 GiB, 2 CPUs" "$(opspace_build_plan $((1434 * mib)) 2)" "2 65536 20 OFF 3"
 # 2 GiB: one compile with the collector from 1 GB on; the proof two per CPU at most.
-expect "2 GiB, 1 CPU" "$(opspace_build_plan $((2048 * mib)) 1)" "1 1048576 default 2"
+expect "2 GiB, 1 CPU" "$(opspace_build_plan $((2048 * mib)) 1)" "1 1048576 default ON 2"
 # This project's machine, 24 GiB and 2 CPUs: as before issue 59, two compiles, four proof tests.
-expect "24 GiB, 2 CPUs" "$(opspace_build_plan $((24576 * mib)) 2)" "2 1048576 default 4"
+expect "24 GiB, 2 CPUs" "$(opspace_build_plan $((24576 * mib)) 2)" "2 1048576 default ON 4"
 # Less memory than any plan: one compile all the same (it may still fit), never none.
-expect "100 MiB, 4 CPUs" "$(opspace_build_plan $((100 * mib)) 4)" "1 65536 20 1"
+expect "100 MiB, 4 CPUs" "$(opspace_build_plan $((100 * mib)) 4)" "1 65536 20 OFF 1"
 
 # --- the readers, on made-up /proc and /sys/fs/cgroup ------------------------------------------
 rm -rf "$work" && mkdir -p "$work"
