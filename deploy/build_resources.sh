@@ -1,8 +1,9 @@
 # shellcheck shell=bash
 # How many compiles setup.sh runs at once, and how GCC's collector is set for them, from the
 # memory and CPU the image build really has (sourced by deploy/setup.sh; tested by
-# tests/deploy/build_resources.sh). Gradescope gives a container 768 MB and half a CPU by default,
-# and a container's /proc/meminfo and nproc show the host's: its cgroup's limits are what count.
+# tests/scripts/check_build_resources.sh). Gradescope gives a container 768 MB and half a CPU
+# by default, and a container's /proc/meminfo and nproc show the host's: its cgroup's limits
+# are what count.
 #
 #   opspace_memory_kib   the memory it may use (KiB): the lowest limit of its cgroup and every
 #                        cgroup above it (v2 memory.max, v1 memory.limit_in_bytes), and

@@ -91,8 +91,10 @@ if [ -f /sys/fs/cgroup/cgroup.controllers ]; then
   procs=("$v2/cgroup.procs")
 else
   own() { sed -n "s/^[0-9]*:\\([^:]*,\\)\\{0,1\\}$1\\(,[^:]*\\)\\{0,1\\}:\\(.*\\)\$/\\3/p" /proc/self/cgroup | head -1; }
-  v1_memory=/sys/fs/cgroup/memory$(own memory)/$name
-  v1_cpu=/sys/fs/cgroup/cpu$(own cpu)/$name
+  v1_memory=/sys/fs/cgroup/memory$(own memory)
+  v1_memory=${v1_memory%/}/$name
+  v1_cpu=/sys/fs/cgroup/cpu$(own cpu)
+  v1_cpu=${v1_cpu%/}/$name
   if [ ! -d "$(dirname "$v1_memory")" ] || [ ! -d "$(dirname "$v1_cpu")" ]; then
     die "no cgroup v1 memory and cpu hierarchies under /sys/fs/cgroup"
   fi
