@@ -13,7 +13,7 @@
 #   bash tests/deploy/gradescope_limits.sh [--memory MIB] [--cpu PERCENT] [--ubuntu2204] [--dir DIR]
 #     --memory MIB   the memory limit (default 768: Docker's 768m, in MiB)
 #     --cpu PERCENT  the CPU quota, in percent of one CPU (default 50)
-#     --ubuntu2204   build with g++ 11 and Debian 11's Bullet 3.06, nlohmann-json and doctest laid
+#     --ubuntu2204   build with g++ 11 and Debian 11's Bullet 3.06 and nlohmann-json laid
 #                    over /usr in a private mount namespace, as scripts/ubuntu2204-check does
 #                    (run that first: it downloads them into build/ubuntu2204/root)
 #     --dir DIR      its work folder (default build/gradescope-limits); the image goes to DIR/root
