@@ -18,9 +18,9 @@
 #                    (run that first: it downloads them into build/ubuntu2204/root)
 #     --dir DIR      its work folder (default build/gradescope-limits); the image goes to DIR/root
 #
-# The cgroup: version 1 (this project's machines: memory and cpu controllers mounted apart) or
-# version 2 (one hierarchy), created by hand under this process's own cgroup and removed at the
-# end. The v2 path has not run on the project's machines, which are v1.
+# The cgroup, created by hand and removed at the end: version 1 (this project's machines: memory
+# and cpu controllers mounted apart), under this process's own cgroup of each; or version 2 (one
+# hierarchy), a child of its root. The v2 path has not run on the project's machines, which are v1.
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 memory_mib=768 cpu_percent=50 ubuntu=false dir=$repo/build/gradescope-limits
@@ -30,7 +30,7 @@ while [ $# -gt 0 ]; do
     --cpu) cpu_percent=${2:?}; shift 2 ;;
     --ubuntu2204) ubuntu=true; shift ;;
     --dir) dir=${2:?}; shift 2 ;;
-    -h|--help) sed -n '2,24p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
     *) echo "gradescope_limits: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
