@@ -51,7 +51,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive apt-get update -qq
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-say "g++ $(g++ -dumpfullversion), cmake $(cmake --version | head -1 | cut -d' ' -f3), bullet $(pkg-config --modversion bullet-float64)"
+say "${CXX:-g++} $("${CXX:-g++}" -dumpfullversion), cmake $(cmake --version | head -1 | cut -d' ' -f3), bullet $(pkg-config --modversion bullet-float64)"
 
 # --- 2. build ---------------------------------------------------------------------------------
 # A compiler launcher named in the environment (CI's ccache, tests/deploy/autograder.sh) is used
