@@ -68,19 +68,38 @@ newer_on_command_line=(
   'copy_directory_if_different'    # cmake -E, 3.26
   '--touch'                        # cmake -E tar, 3.24
 )
+# One grep per file, listing the words it found (fixed strings); grep's exit 1 is "none", 2 an
+# error, which fails the check rather than passing it.
+cmake_words=() command_words=()
+for word in "${newer_in_cmake[@]}" "${newer_on_command_line[@]}"; do cmake_words+=(-e "$word"); done
+for word in "${newer_on_command_line[@]}"; do command_words+=(-e "$word"); done
+found() {  # found FILE KIND GREP-ARGS...: prints the words of the lists that FILE's lines hold
+  local f=$1 kind=$2 lines status=0
+  shift 2
+  if [ "$kind" = cmake ]; then lines=$(grep -v '^ *#' "$f" || true)
+  else lines=$(grep -E '\b(cmake|ctest)\b' "$f" | grep -v '^ *#' || true); fi
+  printf '%s\n' "$lines" | grep -oF "$@" | sort -u || status=${PIPESTATUS[1]}
+  [ "$status" -le 1 ] || echo "grep-error:$status"
+}
 for f in "${cmake_files[@]}"; do
-  for word in "${newer_in_cmake[@]}" "${newer_on_command_line[@]}"; do
-    if grep -v '^ *#' "$f" | grep -qF -- "$word"; then fail "${f#"$repo"/} uses '$word', newer than CMake $minimum"; fi
-  done
+  while IFS= read -r word; do
+    case "$word" in
+      "") ;;
+      grep-error:*) fail "grep could not search ${f#"$repo"/} (exit ${word#grep-error:})" ;;
+      *) fail "${f#"$repo"/} uses '$word', newer than CMake $minimum" ;;
+    esac
+  done < <(found "$f" cmake "${cmake_words[@]}")
 done
+self=$(realpath "${BASH_SOURCE[0]}")
 for f in "${script_files[@]}"; do
-  [ "$f" = "${BASH_SOURCE[0]}" ] && continue
-  [ "$(realpath "$f")" = "$(realpath "${BASH_SOURCE[0]}")" ] && continue
-  for word in "${newer_on_command_line[@]}"; do
-    if grep -E '\b(cmake|ctest)\b' "$f" | grep -v '^ *#' | grep -qF -- "$word"; then
-      fail "${f#"$repo"/} calls cmake or ctest with '$word', newer than CMake $minimum"
-    fi
-  done
+  [ "$(realpath "$f")" = "$self" ] && continue
+  while IFS= read -r word; do
+    case "$word" in
+      "") ;;
+      grep-error:*) fail "grep could not search ${f#"$repo"/} (exit ${word#grep-error:})" ;;
+      *) fail "${f#"$repo"/} calls cmake or ctest with '$word', newer than CMake $minimum" ;;
+    esac
+  done < <(found "$f" script "${command_words[@]}")
 done
 
 echo "${#cmake_files[@]} CMake files and ${#script_files[@]} scripts checked against CMake $minimum; presets version $version"
