@@ -22,14 +22,15 @@
 # The numbers, measured with g++ 11 on the library's two unity units and on their files one by
 # one (docs/instructor.md, "Gradescope's memory and CPU"):
 # - With the collector from 1 GB on (the top CMakeLists.txt's default) the library's simulation
-#   unit peaks at 970 MB (1147 MB with g++ 12 for the largest, docs/performance.md): a compile
+#   unit peaks at 947 MiB (1147 MB with g++ 12 for the largest, docs/performance.md): a compile
 #   is given 1.5 GiB.
 opspace_big_job_kib=$((1536 * 1024))
 # - Below that, the grade path's libraries are compiled one unit per file (OPSPACE_UNITY_BUILD
 #   OFF) and GCC collects from 64 MB on and at each 20 % of growth: the same unit whole peaked at
-#   716 MB even so (802 MB with GCC's defaults, 661 MB collecting from 32 MB at each 10 %), its
-#   largest file alone at 441 MB. A compile is given 640 MiB: under 768 MB, one at a time, with
-#   room for ninja, the shell and the kernel's cache of the headers.
+#   699 MiB even so (783 MiB with GCC's defaults, 645 MiB collecting from 32 MB at each 10 %; the
+#   algorithms unit 834 MiB), the largest file alone at 431 MiB. A compile is given 640 MiB:
+#   under 768 MiB, one at a time, with room for ninja, the shell and the kernel's cache of the
+#   headers.
 opspace_small_heap_kib=65536
 opspace_small_expand=20
 opspace_small_job_kib=$((640 * 1024))
