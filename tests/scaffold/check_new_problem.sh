@@ -1,0 +1,78 @@
+#!/bin/bash
+# check_new_problem.sh SOURCE WORK [KEY]: a simulated problem is its folder, its line in
+# problems.txt, its exercise and its solution (docs/grader.md, "Adding a problem"). In a copy of
+# SOURCE (git's files as they are in the working tree, the uncommitted change with them) under
+# WORK, scripts/new-problem makes problem KEY (default fe) on the PUMA; the copy is built, as the
+# release preset, with the new problem's scenario and graded files compiled each alone (no unity
+# unit lends them an include), only the targets grading needs; then
+#   - its stub scores 0 and its solution full marks through hw2-grade;
+#   - the graded suite's checks pass for it with nothing written by hand: its known mistake loses
+#     exactly its tests, its rubric row says so, its case registered from problems.txt;
+#   - its program runs, and says it has no live lab (--live);
+#   - every path its comments cite exists;
+#   - nothing changed in the copy outside problems/KEY/, problems.txt, exercises/pKEY.cpp and
+#     solutions/pKEY.cpp.
+# Set CMAKE_CXX_COMPILER_LAUNCHER=ccache (the build's objects are reused: CCACHE_BASEDIR is set to
+# the copy, whose paths below it are SOURCE's).
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
+source_dir=$(cd "$1" && pwd) work=$2 key=${3:-fe}
+command -v git > /dev/null || { echo "SKIPPED: no git"; exit 0; }
+git -C "$source_dir" rev-parse --git-dir > /dev/null 2>&1 || { echo "SKIPPED: $source_dir is no git checkout"; exit 0; }
+start=$(date +%s)
+seconds() { echo "$(( $(date +%s) - start )) s"; }
+
+# The copy, as a repository of its own: its first commit is SOURCE's working tree.
+copy=$work/tree
+mkdir -p "$copy"
+find "$copy" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +  # its build stays: ninja's state
+(cd "$source_dir" && git ls-files -z --cached --others --exclude-standard |
+   xargs -0 -I{} sh -c 'test -e "{}" && printf "%s\0" "{}"' | tar --null -T - -cf -) | (cd "$copy" && tar -xf -)
+git -C "$copy" init -q
+git -C "$copy" add -A
+git -C "$copy" -c user.name=scaffold -c user.email=scaffold@localhost commit -q -m "the tree" --no-verify
+
+bash "$copy/scripts/new-problem" "$key" --simulated puma || fail "scripts/new-problem $key --simulated puma failed"
+echo "made problem $key ($(seconds))"
+
+# Nothing outside the problem's four places.
+outside=$(git -C "$copy" status --porcelain --untracked-files=all |
+  awk -v k="$key" '{ p = $2 } p != "problems.txt" && p != "exercises/p" k ".cpp" && p != "solutions/p" k ".cpp" &&
+                   index(p, "problems/" k "/") != 1 { print }')
+[ -z "$outside" ] || fail "scripts/new-problem changed files outside problem $key's places:
+$outside"
+
+export CCACHE_BASEDIR=$copy
+cmake --preset release -S "$copy" -DOPSPACE_BUILD_BENCH=OFF "-DOPSPACE_NO_UNITY_PROBLEMS=$key" > "$work/configure.log" 2>&1 ||
+  { tail -30 "$work/configure.log"; fail "configuring the copy with problem $key failed ($work/configure.log)"; }
+build=$copy/build/release
+cmake --build "$build" --target hw2-grade hw2-grade-sol opspace_runner_loops "hw2-p$key" "hw2-p$key-sol" test_graded_suite \
+  > "$work/build.log" 2>&1 || { grep -B2 -A12 "error" "$work/build.log" | head -60; fail "building the copy with problem $key failed ($work/build.log)"; }
+echo "built ($(seconds))"
+
+# grade NAME DIR: hw2-grade's report of problem KEY with the exercise files of DIR.
+grade() {
+  "$build/apps/hw2-grade" --problem "$key" --exercises "$2" --seed 1 --jobs 1 --cache "$work/cache" > "$work/$1.txt" 2>&1 ||
+    { cat "$work/$1.txt"; fail "hw2-grade failed on the $1"; }
+  grep -E "^Total: " "$work/$1.txt" || { cat "$work/$1.txt"; fail "no total in the $1's report"; }
+}
+[ "$(grade stub "$copy/exercises")" = "Total: 0 / 6 points" ] || { cat "$work/stub.txt"; fail "the stub of problem $key does not score 0 / 6"; }
+[ "$(grade solution "$copy/solutions")" = "Total: 6 / 6 points" ] || { cat "$work/solution.txt"; fail "the solution of problem $key does not earn 6 / 6"; }
+echo "graded: stub 0 / 6, solution 6 / 6 ($(seconds))"
+
+"$build/tests/test_graded_suite" -tc="*: $key,*rubric row*,*full marks*" > "$work/suite.txt" 2>&1 ||
+  { tail -40 "$work/suite.txt"; fail "the graded suite's checks fail with problem $key"; }
+grep -q "test cases: *[1-9]" "$work/suite.txt" || { cat "$work/suite.txt"; fail "the graded suite ran no case for problem $key"; }
+echo "the graded suite's checks pass ($(seconds))"
+
+"$build/apps/hw2-p$key-sol" --duration 0.1 --csv "$work/run.csv" > "$work/run.txt" 2>&1 || { cat "$work/run.txt"; fail "hw2-p$key-sol failed"; }
+# --live: its folder declares no LAB (a build without the live lab says that instead); before, the
+# program died of an empty std::function ("bad_function_call").
+set +e
+"$build/apps/hw2-p$key-sol" --live > "$work/live.txt" 2>&1
+code=$?
+set -e
+[ $code -eq 2 ] && grep -q "no live lab" "$work/live.txt" ||
+  { cat "$work/live.txt"; fail "hw2-p$key-sol --live exited $code, without saying it has no live lab"; }
+bash "$copy/tests/docs/check_cited_paths.sh" "$copy" > "$work/cited.txt" 2>&1 || { cat "$work/cited.txt"; fail "a path cited in problem $key's files is missing"; }
+echo "PASS: problem $key made, built and graded in $(seconds)"
