@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "pinned_run.hpp"
+#include "simulated_runs.hpp"
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
@@ -143,27 +143,20 @@ void law(const Hw2Api& api, Check& check) {
 // problem set's (the grader's closed forms), not the student's 2(a): 2(a) has its own test, so
 // a wrong 2(a) costs that test alone and cannot be answered differently during a run.
 // The run costs ~0.6 s (pinned_run.hpp).
-using Run = PinnedRun<p2::Result>;
-const Run& run(const Hw2Api& api) {
-  return pinned_run<p2::Result>(api.identity, 0, kLawTol, [&api](LawPin& pin) {
-    scenarios::RunOptions options;
-    options.duration = scenarios::p2::Scenario::kGradedDuration;  // two periods: the drift test compares them
-    // Where the law acts: the task force [F; M] = Jbar0^T tau per direction, and N0^T tau.
-    pin.name_parts(task_parts({{"F_x", "N"}, {"F_y", "N"}, {"F_z", "N"}, {"M_x", "N m"}, {"M_y", "N m"}, {"M_z", "N m"}}, 7));
-    const auto pinned = [control = api.p2.control, &pin](const hw2::p2::State& s, const hw2::p2::Goal& goal) {
-      const Vector7d tau = control(s, goal);
-      pin.see(s.t, expected_torque(s, goal), tau, [&s] { return task_split(s.Jbar0, s.N0); });
-      return tau;
-    };
-    return p2::run(pinned, problem_set_xddot_d, options);
-  });
-}
+const auto kRuns = simulated_runs<p2::Result>(kLawTol, [](const Hw2Api& api, int, LawPin& pin) {
+  scenarios::RunOptions options;
+  options.duration = scenarios::p2::Scenario::kGradedDuration;  // two periods: the drift test compares them
+  // Where the law acts: the task force [F; M] = Jbar0^T tau per direction, and N0^T tau.
+  pin.name_parts(task_parts({{"F_x", "N"}, {"F_y", "N"}, {"F_z", "N"}, {"M_x", "N m"}, {"M_y", "N m"}, {"M_z", "N m"}}, 7));
+  const auto split = [](const hw2::p2::State& s) { return task_split(s.Jbar0, s.N0); };
+  return p2::run(pinned_control<hw2::p2::State>(pin, api.p2.control, &expected_torque, split),
+                 problem_set_xddot_d, options);
+});
+using Run = decltype(kRuns)::Run;
+const Run& run(const Hw2Api& api) { return kRuns.run(api); }
 
 // The reference's run: the problem set's law (the oracles) in the same scenario.
-const p2::Result& reference_run() {
-  static const Hw2Api oracles = oracle::reference_api();
-  return run(oracles).result;
-}
+const p2::Result& reference_run() { return kRuns.reference(); }
 
 // The series the checks read (problems/2/run/scenario.hpp, which the programs' --test replay shares).
 using p2::lambda_dot_lambda_d;

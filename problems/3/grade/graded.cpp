@@ -15,7 +15,7 @@
 #include <string>
 #include <limits>
 
-#include "pinned_run.hpp"
+#include "simulated_runs.hpp"
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
@@ -101,33 +101,26 @@ void law(const Hw2Api& api, Check& check) {
 
 // The closed-loop run with the pin of its law: the ticks, if any, at which the torque was not
 // expected_torque() at that tick's State and Goal (pinned_run.hpp).
-using Run = PinnedRun<p3::Result>;
-const Run& run(const Hw2Api& api) {
-  return pinned_run<p3::Result>(api.identity, 0, kLawTol, [&api](LawPin& pin) {
-    scenarios::RunOptions options;
-    options.duration = scenarios::p3::Scenario::kGradedDuration;  // as hw2-p3 --test replays it
-    // Where the law acts: [F; M] = Jbar0^T tau per direction, each marked by its selection, and N0^T tau.
-    pin.name_parts(task_parts({{"F_x (force-controlled)", "N"},
-                               {"F_y (motion-controlled)", "N"},
-                               {"F_z (motion-controlled)", "N"},
-                               {"M_x (motion-controlled)", "N m"},
-                               {"M_y (force-controlled)", "N m"},
-                               {"M_z (force-controlled)", "N m"}},
-                              7));
-    const auto pinned = [control = api.p3.control, &pin](const hw2::p3::State& s, const hw2::p3::Goal& goal) {
-      const Vector7d tau = control(s, goal);
-      pin.see(s.t, expected_torque(s, goal), tau, [&s] { return task_split(s.Jbar0, s.N0); });
-      return tau;
-    };
-    return p3::run(pinned, options);
-  });
-}
+const auto kRuns = simulated_runs<p3::Result>(kLawTol, [](const Hw2Api& api, int, LawPin& pin) {
+  scenarios::RunOptions options;
+  options.duration = scenarios::p3::Scenario::kGradedDuration;  // as hw2-p3 --test replays it
+  // Where the law acts: [F; M] = Jbar0^T tau per direction, each marked by its selection, and N0^T tau.
+  pin.name_parts(task_parts({{"F_x (force-controlled)", "N"},
+                             {"F_y (motion-controlled)", "N"},
+                             {"F_z (motion-controlled)", "N"},
+                             {"M_x (motion-controlled)", "N m"},
+                             {"M_y (force-controlled)", "N m"},
+                             {"M_z (force-controlled)", "N m"}},
+                            7));
+  const auto split = [](const hw2::p3::State& s) { return task_split(s.Jbar0, s.N0); };
+  return p3::run(pinned_control<hw2::p3::State>(pin, api.p3.control, &expected_torque, split),
+                 options);
+});
+using Run = decltype(kRuns)::Run;
+const Run& run(const Hw2Api& api) { return kRuns.run(api); }
 
 // The reference's run: the problem set's law (the oracles) in the same scenario.
-const p3::Result& reference_run() {
-  static const Hw2Api oracles = oracle::reference_api();
-  return run(oracles).result;
-}
+const p3::Result& reference_run() { return kRuns.reference(); }
 
 // "90.1 deg".
 std::string format_degrees(double radians) {

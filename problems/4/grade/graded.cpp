@@ -15,7 +15,7 @@
 #include <limits>
 #include <map>
 
-#include "pinned_run.hpp"
+#include "simulated_runs.hpp"
 #include "answers.hpp"
 #include "oracles.hpp"
 #include "run_figure.hpp"
@@ -282,21 +282,17 @@ void law(const Hw2Api& api, Check& check) {
 
 // A closed-loop run toward one target (~0.1 s), with the pin of its law: the ticks, if any, at
 // which the torque was not expected_torque() at that tick's State and Goal (pinned_run.hpp).
-using Run = PinnedRun<p4::Result>;
-const Run& run(const Hw2Api& api, Target target) {
-  return pinned_run<p4::Result>(api.identity, static_cast<int>(target), kLawTol, [&api, target](LawPin& pin) {
-    scenarios::RunOptions options;
-    options.duration = scenarios::p4::Scenario::kGradedDuration;  // as hw2-p4 --test replays it
-    // Where the law acts: the tip force Jbar_v^T tau per direction, and N^T tau (the State's robust N).
-    pin.name_parts(task_parts({{"the tip force F_x", "N"}, {"the tip force F_y", "N"}, {"the tip force F_z", "N"}}, 3));
-    const auto pinned = [control = api.p4.control, &pin](Target aim, const hw2::p4::State& s, const hw2::p4::Goal& goal) {
-      const Eigen::Vector3d tau = control(aim, s, goal);
-      pin.see(s.t, expected_torque(aim, s, goal), tau, [&s] { return task_split(s.Jbar_v, s.N); });
-      return tau;
-    };
-    return p4::run(target, pinned, options);
-  });
-}
+const auto kRuns = simulated_runs<p4::Result>(kLawTol, [](const Hw2Api& api, int variant, LawPin& pin) {
+  scenarios::RunOptions options;
+  options.duration = scenarios::p4::Scenario::kGradedDuration;  // as hw2-p4 --test replays it
+  // Where the law acts: the tip force Jbar_v^T tau per direction, and N^T tau (the State's robust N).
+  pin.name_parts(point_task_parts(3));
+  const auto split = [](const hw2::p4::State& s) { return task_split(s.Jbar_v, s.N); };
+  return p4::run(static_cast<Target>(variant),
+                 pinned_control<hw2::p4::State>(pin, api.p4.control, &expected_torque, split), options);
+});
+using Run = decltype(kRuns)::Run;
+const Run& run(const Hw2Api& api, Target target) { return kRuns.run(api, static_cast<int>(target)); }
 
 const p4::Result& run_plain(Target target) {
   static std::map<int, p4::Result> cache;
@@ -322,10 +318,7 @@ std::string millimetres(double metres) {
 }
 
 // The reference's run toward `target`: the problem set's law (the oracles) in the same scenario.
-const p4::Result& reference_run(Target target) {
-  static const Hw2Api oracles = oracle::reference_api();
-  return run(oracles, target).result;
-}
+const p4::Result& reference_run(Target target) { return kRuns.reference(static_cast<int>(target)); }
 
 // The tip's distance to x_d (m), the series whose last 5 mm crossing is the reach time.
 // (problems/4/run/scenario.hpp, which the programs' --test replay shares)
