@@ -10,8 +10,8 @@
 #     exactly its tests, its rubric row says so, its case registered from problems.txt;
 #   - its program runs, and says it has no live lab (--live);
 #   - every path its comments cite exists;
-#   - nothing changed in the copy outside problems/KEY/, problems.txt, exercises/pKEY.cpp and
-#     solutions/pKEY.cpp.
+#   - nothing changed in the copy outside problems/<KEY>/, problems.txt, exercises/p<KEY>.cpp and
+#     solutions/p<KEY>.cpp.
 # Set CMAKE_CXX_COMPILER_LAUNCHER=ccache (the build's objects are reused: CCACHE_BASEDIR is set to
 # the copy, whose paths below it are SOURCE's).
 set -euo pipefail
