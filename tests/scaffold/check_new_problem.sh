@@ -1,8 +1,8 @@
 #!/bin/bash
-# check_new_problem.sh SOURCE WORK [KEY]: a simulated problem is its folder, its line in
+# check_new_problem.sh SOURCE WORK [KEY [ROBOT]]: a simulated problem is its folder, its line in
 # problems.txt, its exercise and its solution (docs/grader.md, "Adding a problem"). In a copy of
 # SOURCE (git's files as they are in the working tree, the uncommitted change with them) under
-# WORK, scripts/new-problem makes problem KEY (default fe) on the PUMA; the copy is built, as the
+# WORK, scripts/new-problem makes problem KEY (default fe) on ROBOT (puma, the default, or iiwa); the copy is built, as the
 # release preset, with the new problem's scenario and graded files compiled each alone (no unity
 # unit lends them an include), only the targets grading needs; then
 #   - its stub scores 0 and its solution full marks through hw2-grade;
@@ -16,7 +16,7 @@
 # the copy, whose paths below it are SOURCE's).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
-source_dir=$(cd "$1" && pwd) work=$2 key=${3:-fe}
+source_dir=$(cd "$1" && pwd) work=$2 key=${3:-fe} robot=${4:-puma}
 command -v git > /dev/null || { echo "SKIPPED: no git"; exit 0; }
 git -C "$source_dir" rev-parse --git-dir > /dev/null 2>&1 || { echo "SKIPPED: $source_dir is no git checkout"; exit 0; }
 start=$(date +%s)
@@ -26,13 +26,15 @@ seconds() { echo "$(( $(date +%s) - start )) s"; }
 copy=$work/tree
 mkdir -p "$copy"
 find "$copy" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +  # its build stays: ninja's state
+# (a tracked file the working tree deleted is passed over: --ignore-failed-read; tar keeps the
+# files' times, so that the copy's build rebuilds only what the change and the problem touch)
 (cd "$source_dir" && git ls-files -z --cached --others --exclude-standard |
-   xargs -0 -I{} sh -c 'test -e "{}" && printf "%s\0" "{}"' | tar --null -T - -cf -) | (cd "$copy" && tar -xf -)
+   tar --null -T - --ignore-failed-read -cf - 2> /dev/null) | (cd "$copy" && tar -xf -)
 git -C "$copy" init -q
 git -C "$copy" add -A
 git -C "$copy" -c user.name=scaffold -c user.email=scaffold@localhost commit -q -m "the tree" --no-verify
 
-bash "$copy/scripts/new-problem" "$key" --simulated puma || fail "scripts/new-problem $key --simulated puma failed"
+bash "$copy/scripts/new-problem" "$key" --simulated "$robot" || fail "scripts/new-problem $key --simulated $robot failed"
 echo "made problem $key ($(seconds))"
 
 # Nothing outside the problem's four places.
@@ -65,7 +67,7 @@ echo "graded: stub 0 / 6, solution 6 / 6 ($(seconds))"
 # and any case that would ask for a line written by hand for a new problem.
 others=""
 for k in "${OPSPACE_KEYS[@]}"; do others+="${others:+,}*is named in the report: $k"; done
-"$build/tests/test_graded_suite" -tce="$others" > "$work/suite.txt" 2>&1 ||
+"$build/tests/mutants/test_graded_suite" -tce="$others" > "$work/suite.txt" 2>&1 ||
   { tail -40 "$work/suite.txt"; fail "the graded suite's checks fail with problem $key"; }
 grep -q "test cases: *[1-9]" "$work/suite.txt" || { cat "$work/suite.txt"; fail "the graded suite ran no case for problem $key"; }
 echo "the graded suite's checks pass ($(seconds))"
