@@ -16,7 +16,8 @@
 # the copy, whose paths below it are SOURCE's).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
-source_dir=$(cd "$1" && pwd) work=$2 key=${3:-fe} robot=${4:-puma}
+mkdir -p "$2"
+source_dir=$(cd "$1" && pwd) work=$(cd "$2" && pwd) key=${3:-fe} robot=${4:-puma}
 command -v git > /dev/null || { echo "SKIPPED: no git"; exit 0; }
 git -C "$source_dir" rev-parse --git-dir > /dev/null 2>&1 || { echo "SKIPPED: $source_dir is no git checkout"; exit 0; }
 start=$(date +%s)
