@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "law_pin.hpp"
@@ -22,15 +23,22 @@
 
 namespace opspace::grading {
 
-/// judge(rng, state) at `states` random states of `observer` around q0 (the scenario's start),
-/// until it returns false (a check failed: the test says so once). The draws, in order: q, dq, t.
+/// judge(rng, state) at `states` random states around q0 (the scenario's start), until it returns
+/// false (a check failed: the test says so once). The draws, in order: q, dq, t; the State is
+/// observer.observe(t, q, dq), or observer(t, q, dq) where `observer` is a function (problems 2
+/// and 3 observe lambda on the side of lambda_d(t)).
 template <class Observer, class Q, class Judge>
 void law_at_random_states(unsigned seed, int states, Observer& observer, const Q& q0, double t_max, Judge judge) {
   testing::Random rng(seed_for(seed));
   for (int k = 0; k < states; ++k) {
     const Q q = q0 + rng.vector(q0.size(), -0.5, 0.5);
     const Q dq = rng.vector(q0.size(), -1.0, 1.0);
-    if (!judge(rng, observer.observe(rng.uniform(0.0, t_max), q, dq))) return;
+    const double t = rng.uniform(0.0, t_max);
+    if constexpr (std::is_invocable_v<Observer&, double, const Q&, const Q&>) {
+      if (!judge(rng, observer(t, q, dq))) return;
+    } else {
+      if (!judge(rng, observer.observe(t, q, dq))) return;
+    }
   }
 }
 

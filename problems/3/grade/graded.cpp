@@ -75,14 +75,12 @@ Vector7d expected_torque(const hw2::p3::State& s, const hw2::p3::Goal& goal) {
 // random goals and gains, and a random F_d with all six components non-zero: the components
 // in the motion directions must be filtered out by Omega-bar, so no hard-coded number passes.
 void law(const Hw2Api& api, Check& check) {
-  testing::Random rng(seed_for(331));
   p3::Observer observer(iiwa());
-  for (int k = 0; k < kSamples; ++k) {
-    const Vector7d q = p3::initial_q() + rng.vector(7, -0.5, 0.5);
-    const Vector7d dq = rng.vector(7, -1.0, 1.0);
-    const double t = rng.uniform(0.0, 10.0);
-    const hw2::p3::State& s = observer.observe(t, q, dq, p3::goal(t).x_d.tail<4>());
-    hw2::p3::Goal goal = p3::goal(t);
+  const auto observe = [&observer](double t, const Vector7d& q, const Vector7d& dq) -> const hw2::p3::State& {
+    return observer.observe(t, q, dq, p3::goal(t).x_d.tail<4>());
+  };
+  const auto judge = [&](testing::Random& rng, const hw2::p3::State& s) {
+    hw2::p3::Goal goal = p3::goal(s.t);
     const Eigen::Vector4d lambda_d = (s.lambda + rng.vector(4, -0.3, 0.3)).normalized();
     goal.x_d << s.x_p + rng.vector(3, -0.05, 0.05), lambda_d;
     // a physical xdot_d: lambdadot_d = E_r(lambda_d) w_d
@@ -92,11 +90,11 @@ void law(const Hw2Api& api, Check& check) {
     goal.kpx = rng.uniform(10, 100);
     goal.kvx = rng.uniform(5, 30);
     goal.kvj = rng.uniform(5, 30);
-    if (!check.near("Gamma at q = " + format(q.transpose()), expected_torque(s, goal), api.p3.control(s, goal),
-                    kLawTol, "J0^T (Lambda0 Omega (PD + feed-forward) + p + Omega-bar F_d) + N0^T (A (-kvj dq) + g)")) {
-      return;
-    }
-  }
+    return check.near("Gamma at q = " + format(s.q.transpose()), expected_torque(s, goal),
+                      api.p3.control(s, goal), kLawTol,
+                      "J0^T (Lambda0 Omega (PD + feed-forward) + p + Omega-bar F_d) + N0^T (A (-kvj dq) + g)");
+  };
+  law_at_random_states(331, kSamples, observe, p3::initial_q(), 10.0, judge);
 }
 
 // The closed-loop run with the pin of its law: the ticks, if any, at which the torque was not
