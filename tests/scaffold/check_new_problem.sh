@@ -35,7 +35,9 @@ git -C "$copy" init -q
 git -C "$copy" add -A
 git -C "$copy" -c user.name=scaffold -c user.email=scaffold@localhost commit -q -m "the tree" --no-verify
 
-bash "$copy/scripts/new-problem" "$key" --simulated "$robot" || fail "scripts/new-problem $key --simulated $robot failed"
+# ROBOT pure: a problem of pure functions (scripts/new-problem KEY --pure), 3 points, no program.
+if [ "$robot" = pure ]; then kind=(--pure) points=3; else kind=(--simulated "$robot") points=6; fi
+bash "$copy/scripts/new-problem" "$key" "${kind[@]}" || fail "scripts/new-problem $key ${kind[*]} failed"
 echo "made problem $key ($(seconds))"
 
 # Nothing outside the problem's four places.
@@ -49,7 +51,9 @@ export CCACHE_BASEDIR=$copy
 cmake --preset release -S "$copy" -DOPSPACE_BUILD_BENCH=OFF "-DOPSPACE_NO_UNITY_PROBLEMS=$key" > "$work/configure.log" 2>&1 ||
   { tail -30 "$work/configure.log"; fail "configuring the copy with problem $key failed ($work/configure.log)"; }
 build=$copy/build/release
-cmake --build "$build" --target hw2-grade hw2-grade-sol opspace_runner_loops "hw2-p$key" "hw2-p$key-sol" test_graded_suite \
+programs=("hw2-p$key" "hw2-p$key-sol")
+[ "$robot" != pure ] || programs=()
+cmake --build "$build" --target hw2-grade hw2-grade-sol opspace_runner_loops "${programs[@]}" test_graded_suite \
   > "$work/build.log" 2>&1 || { grep -B2 -A12 "error" "$work/build.log" | head -60; fail "building the copy with problem $key failed ($work/build.log)"; }
 echo "built ($(seconds))"
 
@@ -59,9 +63,11 @@ grade() {
     { cat "$work/$1.txt"; fail "hw2-grade failed on the $1"; }
   grep -E "^Total: " "$work/$1.txt" || { cat "$work/$1.txt"; fail "no total in the $1's report"; }
 }
-[ "$(grade stub "$copy/exercises")" = "Total: 0 / 6 points" ] || { cat "$work/stub.txt"; fail "the stub of problem $key does not score 0 / 6"; }
-[ "$(grade solution "$copy/solutions")" = "Total: 6 / 6 points" ] || { cat "$work/solution.txt"; fail "the solution of problem $key does not earn 6 / 6"; }
-echo "graded: stub 0 / 6, solution 6 / 6 ($(seconds))"
+[ "$(grade stub "$copy/exercises")" = "Total: 0 / $points points" ] ||
+  { cat "$work/stub.txt"; fail "the stub of problem $key does not score 0 / $points"; }
+[ "$(grade solution "$copy/solutions")" = "Total: $points / $points points" ] ||
+  { cat "$work/solution.txt"; fail "the solution of problem $key does not earn $points / $points"; }
+echo "graded: stub 0 / $points, solution $points / $points ($(seconds))"
 
 # Every case of the graded suite but the other problems' catalogue cases (theirs, unchanged, run in
 # the tree's own ctest): the new problem's case, its rubric, the suite's full marks and identities,
@@ -73,14 +79,16 @@ for k in "${OPSPACE_KEYS[@]}"; do others+="${others:+,}*is named in the report: 
 grep -q "test cases: *[1-9]" "$work/suite.txt" || { cat "$work/suite.txt"; fail "the graded suite ran no case for problem $key"; }
 echo "the graded suite's checks pass ($(seconds))"
 
-"$build/apps/hw2-p$key-sol" --duration 0.1 --csv "$work/run.csv" > "$work/run.txt" 2>&1 || { cat "$work/run.txt"; fail "hw2-p$key-sol failed"; }
-# --live: its folder declares no LAB (a build without the live lab says that instead); before, the
-# program died of an empty std::function ("bad_function_call").
-set +e
-"$build/apps/hw2-p$key-sol" --live > "$work/live.txt" 2>&1
-code=$?
-set -e
-[ $code -eq 2 ] && grep -q "no live lab" "$work/live.txt" ||
-  { cat "$work/live.txt"; fail "hw2-p$key-sol --live exited $code, without saying it has no live lab"; }
+if [ "$robot" != pure ]; then
+  "$build/apps/hw2-p$key-sol" --duration 0.1 --csv "$work/run.csv" > "$work/run.txt" 2>&1 || { cat "$work/run.txt"; fail "hw2-p$key-sol failed"; }
+  # --live: its folder declares no LAB (a build without the live lab says that instead); before, the
+  # program died of an empty std::function ("bad_function_call").
+  set +e
+  "$build/apps/hw2-p$key-sol" --live > "$work/live.txt" 2>&1
+  code=$?
+  set -e
+  [ $code -eq 2 ] && grep -q "no live lab" "$work/live.txt" ||
+    { cat "$work/live.txt"; fail "hw2-p$key-sol --live exited $code, without saying it has no live lab"; }
+fi
 bash "$copy/tests/docs/check_cited_paths.sh" "$copy" > "$work/cited.txt" 2>&1 || { cat "$work/cited.txt"; fail "a path cited in problem $key's files is missing"; }
 echo "PASS: problem $key made, built and graded in $(seconds)"
