@@ -83,7 +83,8 @@ int run_parsed(const char* argv0, Options& options, const ScenarioProgram<Scenar
     const typename ScenarioProgram<Scenario>::Result result = opspace::scenarios::run(scenario, options.run);
     program.summary(result, options.run.duration, options.run.csv_path);
     if (!result.samples.empty()) program.finals(options, result);
-    if (!program.figures || !program.replay_scene) return result.failure.empty() ? 0 : 1;  // no pictures
+    // A problem without PICTURES: no plots and no replay, the exit code finish()'s.
+    if (!program.figures || !program.replay_scene) return result.samples.empty() || !result.failure.empty() ? 1 : 0;
     return finish(
         options, prefix, result, [&] { return program.figures(result, scenario); },
         [&] { return program.replay_scene(result, scenario); });
