@@ -158,6 +158,30 @@ int no_live(const char* program) {
   return 2;
 }
 
+int scenario_usage(const char* program, int code, const std::string& what, double duration, bool live) {
+  (code ? std::cerr : std::cout)
+      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay]"
+      << (live ? " [--live [--port N]]" : "") << "\n"
+      << "       [--test NAME [--seed N]]   replay a graded test's run, as the grader's report prints it\n"
+      << "  " << what << "\n"
+      << "  --duration  simulated seconds (default " << duration << ", at most " << kMaxDuration << ")\n"
+      << "  --csv       log file (default out/" << program_name(program) << ".csv in the repository); plots and the 3D replay page are\n"
+      << "              written next to it, named after it (docs/visuals.md)\n"
+      << "  --no-plots, --no-replay  skip those pictures\n";
+  if (live) {
+    (code ? std::cerr : std::cout)
+        << "  --live      run in real time in the browser, push the arm with the mouse (docs/live.md); until\n"
+        << "              Ctrl-C, or --duration simulated seconds. --port N: its port (default: a free one)\n";
+  }
+  return code;
+}
+
+int no_lab(const char* program, const std::string& problem) {
+  std::cerr << program << ": problem " << problem << " has no live lab (--live): its folder declares none (LAB in "
+            << "problems/" << problem << "/CMakeLists.txt)\n";
+  return 2;
+}
+
 int guarded(const char* program, const std::function<int()>& body) {
   try {
     return body();

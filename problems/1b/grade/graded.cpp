@@ -13,13 +13,13 @@
 #include <limits>
 #include <memory>
 
-#include "pinned_run.hpp"
 #include "answers.hpp"
 #include "judge/oracles.hpp"
 #include "run_figure.hpp"
 #include "judge/graded_suite.hpp"
 #include "problems/1b/tests.hpp"
 #include "grader/suite/random.hpp"
+#include "simulated_runs.hpp"
 
 namespace opspace::grading {
 
@@ -78,58 +78,41 @@ Vector6d expected_torque(Part part, const hw2::p1b::State& s, const hw2::p1b::Go
   return Vector6d::Zero();
 }
 
-// Random states around the scenario's start (within 0.5 rad, where Jv is well conditioned),
-// random goals and gains, so that no single hard-coded number can pass.
+// Random states around the scenario's start (law_at_random_states: within 0.5 rad, where Jv is
+// well conditioned), random goals and gains, so that no single hard-coded number can pass.
 void law(Part part, unsigned seed, const std::string& meaning, const Hw2Api& api, Check& check) {
-  testing::Random rng(seed_for(seed));
   p1b::Observer observer(puma());
-  for (int k = 0; k < kStates; ++k) {
-    const Vector6d q = p1b::initial_q() + rng.vector(6, -0.5, 0.5);
-    const Vector6d dq = rng.vector(6, -1.0, 1.0);
-    const hw2::p1b::State& s = observer.observe(rng.uniform(0.0, 10.0), q, dq);
-    hw2::p1b::Goal goal = p1b::goal(s.t, q);
-    goal.x_d = s.x + rng.vector(3, -0.05, 0.05);
-    goal.q_d = q + rng.vector(6, -0.3, 0.3);
-    goal.kpx = rng.uniform(10, 100);
-    goal.kvx = rng.uniform(5, 30);
-    goal.kpj = rng.uniform(10, 100);
-    goal.kvj = rng.uniform(5, 30);
-    const Vector6d expected = expected_torque(part, s, goal);
-    if (!check.near("Gamma at q = " + format(q), expected, api.p1b.control(part, s, goal), kLawTol, meaning)) return;
-  }
+  law_at_random_states(seed, kStates, observer, p1b::initial_q(), 10.0,
+                       [&](testing::Random& rng, const hw2::p1b::State& s) {
+                         hw2::p1b::Goal goal = p1b::goal(s.t, s.q);
+                         goal.x_d = s.x + rng.vector(3, -0.05, 0.05);
+                         goal.q_d = s.q + rng.vector(6, -0.3, 0.3);
+                         goal.kpx = rng.uniform(10, 100);
+                         goal.kvx = rng.uniform(5, 30);
+                         goal.kpj = rng.uniform(10, 100);
+                         goal.kvj = rng.uniform(5, 30);
+                         const Vector6d expected = expected_torque(part, s, goal);
+                         return check.near("Gamma at q = " + format(s.q), expected, api.p1b.control(part, s, goal),
+                                           kLawTol, meaning);
+                       });
 }
 
-// A closed-loop run of one part (~1 s), with the pin of its law: the ticks, if any, at which
-// the torque was not expected_torque() at that tick's State and Goal (pinned_run.hpp).
-using Run = PinnedRun<p1b::Result>;
-const Run& run(const Hw2Api& api, Part part) {
-  return pinned_run<p1b::Result>(api.identity, static_cast<int>(part), kLawTol, [&api, part](LawPin& pin) {
-    scenarios::RunOptions options;
-    options.duration = scenarios::p1b::Scenario::kGradedDuration;  // as hw2-p1 --test replays it
-    // Where the law acts: the tip force F = Jbar_v^T tau per direction, and N^T tau = (I - Jv^T Jbar_v^T) tau.
-    pin.name_parts(task_parts({{"the tip force F_x", "N"}, {"the tip force F_y", "N"}, {"the tip force F_z", "N"}}, 6));
-    const auto pinned = [control = api.p1b.control, &pin](Part p, const hw2::p1b::State& s, const hw2::p1b::Goal& goal) {
-      const Vector6d tau = control(p, s, goal);
-      pin.see(s.t, expected_torque(p, s, goal), tau, [&s] {
-        return task_split(s.Jbar_v, Matrix6d::Identity() - s.Jbar_v * s.Jv);
-      });
-      return tau;
-    };
-    return p1b::run(part, pinned, options);
-  });
-}
-
-// The run of `part` as Problem::runs lists it: its key and a call that asks for it.
-ListedRun listed_run(Part part) {
-  return {[part](std::uint64_t identity) { return run_key<p1b::Result>(identity, static_cast<int>(part)); },
-          [part](const Hw2Api& api) { run(api, part); }};
-}
-
-// The reference's run of `part`: the problem set's law (the oracles) in the same scenario.
-const p1b::Result& reference_run(Part part) {
-  static const Hw2Api oracles = oracle::reference_api();
-  return run(oracles, part).result;
-}
+// The closed-loop run of each part (~1 s), with the pin of its law: the ticks, if any, at which
+// the torque was not expected_torque() at that tick's State and Goal (simulated_runs.hpp). Where
+// the law acts: the tip force F = Jbar_v^T tau per direction, and N^T tau = (I - Jv^T Jbar_v^T) tau.
+const auto kRuns = simulated_runs<p1b::Result>(kLawTol, [](const Hw2Api& api, int variant, LawPin& pin) {
+  scenarios::RunOptions options;
+  options.duration = scenarios::p1b::Scenario::kGradedDuration;  // as hw2-p1 --test replays it
+  pin.name_parts(point_task_parts(6));
+  return p1b::run(static_cast<Part>(variant),
+                  pinned_control<hw2::p1b::State>(pin, api.p1b.control, &expected_torque,
+                                                  &point_task_split<hw2::p1b::State>),
+                  options);
+});
+using Run = decltype(kRuns)::Run;
+const Run& run(const Hw2Api& api, Part part) { return kRuns.run(api, static_cast<int>(part)); }
+ListedRun listed_run(Part part) { return kRuns.listed(static_cast<int>(part)); }
+const p1b::Result& reference_run(Part part) { return kRuns.reference(static_cast<int>(part)); }
 
 // The series the checks read (problems/1b/run/scenario.hpp, which the programs' --test replay shares).
 using p1b::q2_error;
@@ -212,10 +195,7 @@ const char* law_test(Part part) {
 template <class Of>
 Judgement judgement(const std::string& statistic, const Hw2Api& api, Part part, Of of, double bound, double scale,
                     const std::string& unit) {
-  Judgement j;
-  j.statistic = statistic, j.yours = of(run(api, part).result), j.bound = bound, j.unit_scale = scale, j.unit = unit;
-  j.reference = reference_statistic("1b " + statistic, [of, part] { return of(reference_run(part)); });
-  return j;
+  return kRuns.judgement("1b ", statistic, api, static_cast<int>(part), of, bound, scale, unit);
 }
 
 // The run of `part` went to its end.

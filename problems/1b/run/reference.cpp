@@ -39,10 +39,7 @@ void members(cli::Assignments& set, const p1b::Summary& s) {
   OPSPACE_MEMBER(s, tip_error_rms);
   OPSPACE_MEMBER(s, q2_error_max);
   OPSPACE_MEMBER(s, q2_error_rms);
-  OPSPACE_MEMBER(s, peak_torque);
-  OPSPACE_MEMBER(s, peak_torque_joint);
-  OPSPACE_MEMBER(s, clamped_steps);
-  OPSPACE_MEMBER(s, time_reached);
+  cli::run_totals(set, s);
 }
 #undef OPSPACE_MEMBER
 

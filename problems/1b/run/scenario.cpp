@@ -5,35 +5,17 @@
 #include "opspace/algorithms/dynamics.hpp"
 #include <problems/1b/run/scenario.hpp>
 #include "opspace/simulation/simulation.hpp"
-#include "opspace/scenarios/observe.hpp"
 
 namespace opspace::scenarios::p1b {
 
 void Scenario::summarise(Result& result, const Model&, const Simulation&) const {
-  const Eigen::Vector3d& x_d = x_d_;
   Summary& s = result.summary;
-  double tip_sq = 0.0, q2_sq = 0.0;
-  long n = 0;
-  for (const Sample& sample : result.samples) {
-    for (int i = 0; i < 6; ++i) {
-      if (std::abs(sample.tau(i)) > s.peak_torque) {
-        s.peak_torque = std::abs(sample.tau(i));
-        s.peak_torque_joint = i;
-      }
-    }
-    if (sample.t < kSettleTime) continue;
-    const double tip = (sample.x - x_d).norm();
-    const double q2 = std::abs(sample.q(1) - sample.q2_desired);
-    s.tip_error_max = std::max(s.tip_error_max, tip);
-    s.q2_error_max = std::max(s.q2_error_max, q2);
-    tip_sq += tip * tip;
-    q2_sq += q2 * q2;
-    ++n;
-  }
-  if (n > 0) {
-    s.tip_error_rms = std::sqrt(tip_sq / n);
-    s.q2_error_rms = std::sqrt(q2_sq / n);
-  }
+  for (const Sample& sample : result.samples) add_peak_torque(s, sample.tau);
+  const Eigen::Vector3d& x_d = x_d_;
+  const ErrorStats tip = error_after(result.samples, kSettleTime, [&x_d](const Sample& x) { return (x.x - x_d).norm(); });
+  const ErrorStats q2 = error_after(result.samples, kSettleTime, &q2_error);
+  s.tip_error_max = tip.max, s.tip_error_rms = tip.rms;
+  s.q2_error_max = q2.max, s.q2_error_rms = q2.rms;
 }
 
 std::vector<std::string> Scenario::csv_columns() {
@@ -87,20 +69,7 @@ hw2::p1b::Goal goal(double t, const Eigen::Ref<const Vector6d>& q) {
 }
 
 Observer::Observer(const Model& puma)
-    : model_(require_dof(puma, 6, "p1b::Observer", "problem 1b needs the 6-joint PUMA")),
-      data_(puma), task_(3, puma.dof()), J0_(6, puma.dof()), tip_frame_(puma.frame_id(kTipLink)) {}
-
-const hw2::p1b::State& Observer::observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
-                                         const Eigen::Ref<const Eigen::VectorXd>& dq) {
-  hw2::p1b::State& s = state_;
-  observe_joints(model_, data_, t, q, dq, s);
-  observe_tip(model_, data_, tip_frame_, tip_point(), J0_, s);
-  operational_space(s.A, s.Jv, s.g, task_);
-  s.Lambda_v = task_.Lambda;
-  s.Jbar_v = task_.Jbar;
-  s.p = task_.p;
-  return s;
-}
+    : PointTaskObserver(puma, 6, kTipLink, tip_point(), "p1b::Observer", "problem 1b needs the 6-joint PUMA") {}
 
 std::string describe(hw2::p1b::Part part) {
   switch (part) {

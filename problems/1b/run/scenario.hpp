@@ -16,6 +16,8 @@
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
 #include "opspace/scenarios/loop.hpp"
+#include "opspace/scenarios/point_task.hpp"
+#include "opspace/scenarios/summary.hpp"
 #include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
@@ -67,24 +69,12 @@ double desired_q2(double t);
 hw2::p1b::Goal goal(double t, const Eigen::Ref<const Vector6d>& q);
 
 /// Computes the controller's State from (t, q, dq): tip kinematics, A, g and the
-/// operational-space matrices of the tip task. Allocates nothing per call.
-class Observer {
+/// operational-space matrices of the tip task (scenarios/point_task.hpp). Allocates nothing per call.
+class Observer : public PointTaskObserver<hw2::p1b::State> {
  public:
   /// Workspaces sized for `puma`, which must outlive the Observer. Throws std::invalid_argument
   /// unless it has 6 joints, std::out_of_range unless it has the tip link.
   explicit Observer(const Model& puma);
-  /// The State at time t: tip x, dx, Jv, A, g, Lambda_v, Jbar_v, p at (q, dq).
-  const hw2::p1b::State& observe(double t, const Eigen::Ref<const Eigen::VectorXd>& q,
-                                 const Eigen::Ref<const Eigen::VectorXd>& dq);
-  const hw2::p1b::State& state() const { return state_; }  ///< the last observe()'s State
-
- private:
-  const Model& model_;
-  Data data_;
-  TaskSpace task_;
-  Matrix6Xd J0_;
-  int tip_frame_;
-  hw2::p1b::State state_;
 };
 
 /// The control function under test: exercises/ or solutions/ (hw2::p1b::control), or a mutant.
@@ -100,15 +90,11 @@ struct Sample {
 };
 
 /// What a run measured; errors are taken after kSettleTime.
-struct Summary {
+struct Summary : RunTotals {
   double tip_error_max = 0.0;  ///< max |x - x_d| (m)
   double tip_error_rms = 0.0;  ///< RMS |x - x_d| (m)
   double q2_error_max = 0.0;   ///< max |q2 - q2_d| (rad)
   double q2_error_rms = 0.0;   ///< RMS |q2 - q2_d| (rad)
-  double peak_torque = 0.0;    ///< max |tau_i| requested over the run (N m)
-  int peak_torque_joint = 0;  ///< the joint of that maximum (0-based)
-  long clamped_steps = 0;      ///< steps whose torque was clamped to an effort limit (any joint)
-  double time_reached = 0.0;   ///< simulated time at the end (s)
 };
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded

@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "pinned_run.hpp"
+#include "simulated_runs.hpp"
 #include "answers.hpp"
 #include "judge/oracles.hpp"
 #include "run_figure.hpp"
@@ -115,14 +115,12 @@ Vector7d expected_torque(const hw2::p2::State& s, const hw2::p2::Goal& goal) {
 // random goals (lambda_d a few tenths from lambda, so that E^+ at lambda and at lambda_d
 // differ) and random gains, so that no single hard-coded number can pass.
 void law(const Hw2Api& api, Check& check) {
-  testing::Random rng(seed_for(223));
   p2::Observer observer(iiwa());
-  for (int k = 0; k < kSamples; ++k) {
-    const Vector7d q = p2::initial_q() + rng.vector(7, -0.5, 0.5);
-    const Vector7d dq = rng.vector(7, -1.0, 1.0);
-    const double t = rng.uniform(0.0, 10.0);
-    const hw2::p2::State& s = observer.observe(t, q, dq, p2::desired(t).x.tail<4>());
-    hw2::p2::Goal goal = p2::goal(t);
+  const auto observe = [&observer](double t, const Vector7d& q, const Vector7d& dq) -> const hw2::p2::State& {
+    return observer.observe(t, q, dq, p2::desired(t).x.tail<4>());
+  };
+  const auto judge = [&](testing::Random& rng, const hw2::p2::State& s) {
+    hw2::p2::Goal goal = p2::goal(s.t);
     const Eigen::Vector4d lambda_d = (s.lambda + rng.vector(4, -0.3, 0.3)).normalized();
     goal.x_d << s.x_p + rng.vector(3, -0.05, 0.05), lambda_d;
     // a physical xdot_d: lambdadot_d = E_r(lambda_d) w_d
@@ -131,11 +129,11 @@ void law(const Hw2Api& api, Check& check) {
     goal.kpx = rng.uniform(10, 100);
     goal.kvx = rng.uniform(5, 30);
     goal.kvj = rng.uniform(5, 30);
-    if (!check.near("Gamma at q = " + format(q.transpose()), expected_torque(s, goal), api.p2.control(s, goal),
-                    kLawTol, "decoupled PD + feed-forward + p, null-space damping + g")) {
-      return;
-    }
-  }
+    return check.near("Gamma at q = " + format(s.q.transpose()), expected_torque(s, goal),
+                      api.p2.control(s, goal), kLawTol,
+                      "decoupled PD + feed-forward + p, null-space damping + g");
+  };
+  law_at_random_states(223, kSamples, observe, p2::initial_q(), 10.0, judge);
 }
 
 // The closed-loop run with the pin of its law: the ticks, if any, at which the torque was not
@@ -143,27 +141,20 @@ void law(const Hw2Api& api, Check& check) {
 // problem set's (the grader's closed forms), not the student's 2(a): 2(a) has its own test, so
 // a wrong 2(a) costs that test alone and cannot be answered differently during a run.
 // The run costs ~0.6 s (pinned_run.hpp).
-using Run = PinnedRun<p2::Result>;
-const Run& run(const Hw2Api& api) {
-  return pinned_run<p2::Result>(api.identity, 0, kLawTol, [&api](LawPin& pin) {
-    scenarios::RunOptions options;
-    options.duration = scenarios::p2::Scenario::kGradedDuration;  // two periods: the drift test compares them
-    // Where the law acts: the task force [F; M] = Jbar0^T tau per direction, and N0^T tau.
-    pin.name_parts(task_parts({{"F_x", "N"}, {"F_y", "N"}, {"F_z", "N"}, {"M_x", "N m"}, {"M_y", "N m"}, {"M_z", "N m"}}, 7));
-    const auto pinned = [control = api.p2.control, &pin](const hw2::p2::State& s, const hw2::p2::Goal& goal) {
-      const Vector7d tau = control(s, goal);
-      pin.see(s.t, expected_torque(s, goal), tau, [&s] { return task_split(s.Jbar0, s.N0); });
-      return tau;
-    };
-    return p2::run(pinned, problem_set_xddot_d, options);
-  });
-}
+const auto kRuns = simulated_runs<p2::Result>(kLawTol, [](const Hw2Api& api, int, LawPin& pin) {
+  scenarios::RunOptions options;
+  options.duration = scenarios::p2::Scenario::kGradedDuration;  // two periods: the drift test compares them
+  // Where the law acts: the task force [F; M] = Jbar0^T tau per direction, and N0^T tau.
+  pin.name_parts(task_parts({{"F_x", "N"}, {"F_y", "N"}, {"F_z", "N"}, {"M_x", "N m"}, {"M_y", "N m"}, {"M_z", "N m"}}, 7));
+  const auto split = [](const hw2::p2::State& s) { return task_split(s.Jbar0, s.N0); };
+  return p2::run(pinned_control<hw2::p2::State>(pin, api.p2.control, &expected_torque, split),
+                 problem_set_xddot_d, options);
+});
+using Run = decltype(kRuns)::Run;
+const Run& run(const Hw2Api& api) { return kRuns.run(api); }
 
 // The reference's run: the problem set's law (the oracles) in the same scenario.
-const p2::Result& reference_run() {
-  static const Hw2Api oracles = oracle::reference_api();
-  return run(oracles).result;
-}
+const p2::Result& reference_run() { return kRuns.reference(); }
 
 // The series the checks read (problems/2/run/scenario.hpp, which the programs' --test replay shares).
 using p2::lambda_dot_lambda_d;

@@ -23,17 +23,8 @@ namespace {
 namespace p2 = opspace::scenarios::p2;
 
 int usage(const char* program, int code) {
-  (code ? std::cerr : std::cout)
-      << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay] [--live [--port N]]\n"
-      << "       [--test NAME [--seed N]]   replay a graded test's run, as the grader's report prints it\n"
-      << "  link7 of the iiwa tracks x_d(t) and lambda_d(t) of problem 2\n"
-      << "  --duration  simulated seconds (default " << p2::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
-      << "  --csv       log file (default out/" << cli::program_name(program) << ".csv in the repository); plots and the 3D replay page are\n"
-      << "              written next to it, named after it (docs/visuals.md)\n"
-      << "  --no-plots, --no-replay  skip those pictures\n"
-      << "  --live      run in real time in the browser, push the arm with the mouse (docs/live.md); until\n"
-      << "              Ctrl-C, or --duration simulated seconds. --port N: its port (default: a free one)\n";
-  return code;
+  return cli::scenario_usage(program, code, "link7 of the iiwa tracks x_d(t) and lambda_d(t) of problem 2",
+                             p2::kDefaultDuration, true);
 }
 
 /// The run's results beside the grader's bounds and the reference run.

@@ -28,19 +28,14 @@ void members(cli::Assignments& set, const p2::Summary& s) {
   OPSPACE_MEMBER(s, joint_limit_joint);
   OPSPACE_MEMBER(s, joint_drift_per_period);
   OPSPACE_MEMBER(s, joint_drift_joint);
-  OPSPACE_MEMBER(s, peak_torque);
-  OPSPACE_MEMBER(s, peak_torque_joint);
-  OPSPACE_MEMBER(s, clamped_steps);
-  OPSPACE_MEMBER(s, time_reached);
+  cli::run_totals(set, s);
 }
 #undef OPSPACE_MEMBER
 
 std::string declarations(const p2::Result& r) {
   std::ostringstream out;
-  out << "/// Simulated seconds of problem 2's reference run.\n"
-      << "inline constexpr double kP2Duration = " << p2::kDefaultDuration << ";\n\n"
-      << "/// solutions/' run of problem 2.\n";
-  cli::summary_function<p2::Summary>(out, "p2()", "opspace::scenarios::p2::Summary", {{"", r.summary}}, &members);
+  cli::one_run_declarations(out, "2", "2", p2::kDefaultDuration, "opspace::scenarios::p2::Summary", r.summary,
+                            &members);
   return out.str();
 }
 
@@ -103,9 +98,7 @@ std::string fragment(const p2::Result& r) {
 }  // namespace
 
 cli::ReferenceText reference_run_2() {
-  opspace::scenarios::RunOptions options;
-  options.duration = p2::kDefaultDuration;
-  const p2::Result r = p2::run(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration, options);
-  if (!r.failure.empty()) throw std::runtime_error("problem 2's reference run stopped early: " + r.failure);
+  const p2::Result r = cli::reference_result("2", p2::kDefaultDuration,
+                                               [](const auto& options) { return p2::run(&opspace::hw2::p2::control, &opspace::hw2::p2::desired_acceleration, options); });
   return {{"problems/2/run/scenario.hpp"}, declarations(r), {{"p2-reference", fragment(r)}}};
 }

@@ -20,11 +20,8 @@ void Scenario::summarise(Result& result, const Model& iiwa, const Simulation& si
   s.joint_limit_margin = std::numeric_limits<double>::infinity();
   const Sample* previous = nullptr;
   for (const Sample& sample : result.samples) {
+    add_peak_torque(s, sample.tau);
     for (int i = 0; i < 7; ++i) {
-      if (std::abs(sample.tau(i)) > s.peak_torque) {
-        s.peak_torque = std::abs(sample.tau(i));
-        s.peak_torque_joint = i;
-      }
       const Body& body = iiwa.bodies[static_cast<std::size_t>(i)];
       const double margin = std::min(sample.q(i) - body.lower, body.upper - sample.q(i));
       if (margin < s.joint_limit_margin) {

@@ -17,6 +17,7 @@
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
 #include "opspace/scenarios/loop.hpp"
+#include "opspace/scenarios/summary.hpp"
 #include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
@@ -120,7 +121,7 @@ struct Sample {
 };
 
 /// What a run measured; tracking errors are taken after kSettleTime.
-struct Summary {
+struct Summary : RunTotals {  // peak torque, clamped steps, time reached
   double position_error_max = 0.0;     ///< max |x_p - x_pd| (m)
   double position_error_rms = 0.0;     ///< RMS |x_p - x_pd| (m)
   double orientation_error_max = 0.0;  ///< max angle of R R_d^T (rad)
@@ -137,10 +138,6 @@ struct Summary {
   /// is shorter than kSettleTime + kPeriod.
   double joint_drift_per_period = 0.0;
   int joint_drift_joint = 0;           ///< the joint where that maximum occurred
-  double peak_torque = 0.0;            ///< max |tau_i| requested over the run (N m)
-  int peak_torque_joint = 0;  ///< the joint of that maximum (0-based)
-  long clamped_steps = 0;              ///< joint-steps whose torque was clamped to an effort limit
-  double time_reached = 0.0;           ///< simulated time at the end (s)
 };
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded

@@ -15,7 +15,7 @@
 #include <string>
 #include <limits>
 
-#include "pinned_run.hpp"
+#include "simulated_runs.hpp"
 #include "answers.hpp"
 #include "judge/oracles.hpp"
 #include "run_figure.hpp"
@@ -75,14 +75,12 @@ Vector7d expected_torque(const hw2::p3::State& s, const hw2::p3::Goal& goal) {
 // random goals and gains, and a random F_d with all six components non-zero: the components
 // in the motion directions must be filtered out by Omega-bar, so no hard-coded number passes.
 void law(const Hw2Api& api, Check& check) {
-  testing::Random rng(seed_for(331));
   p3::Observer observer(iiwa());
-  for (int k = 0; k < kSamples; ++k) {
-    const Vector7d q = p3::initial_q() + rng.vector(7, -0.5, 0.5);
-    const Vector7d dq = rng.vector(7, -1.0, 1.0);
-    const double t = rng.uniform(0.0, 10.0);
-    const hw2::p3::State& s = observer.observe(t, q, dq, p3::goal(t).x_d.tail<4>());
-    hw2::p3::Goal goal = p3::goal(t);
+  const auto observe = [&observer](double t, const Vector7d& q, const Vector7d& dq) -> const hw2::p3::State& {
+    return observer.observe(t, q, dq, p3::goal(t).x_d.tail<4>());
+  };
+  const auto judge = [&](testing::Random& rng, const hw2::p3::State& s) {
+    hw2::p3::Goal goal = p3::goal(s.t);
     const Eigen::Vector4d lambda_d = (s.lambda + rng.vector(4, -0.3, 0.3)).normalized();
     goal.x_d << s.x_p + rng.vector(3, -0.05, 0.05), lambda_d;
     // a physical xdot_d: lambdadot_d = E_r(lambda_d) w_d
@@ -92,42 +90,35 @@ void law(const Hw2Api& api, Check& check) {
     goal.kpx = rng.uniform(10, 100);
     goal.kvx = rng.uniform(5, 30);
     goal.kvj = rng.uniform(5, 30);
-    if (!check.near("Gamma at q = " + format(q.transpose()), expected_torque(s, goal), api.p3.control(s, goal),
-                    kLawTol, "J0^T (Lambda0 Omega (PD + feed-forward) + p + Omega-bar F_d) + N0^T (A (-kvj dq) + g)")) {
-      return;
-    }
-  }
+    return check.near("Gamma at q = " + format(s.q.transpose()), expected_torque(s, goal),
+                      api.p3.control(s, goal), kLawTol,
+                      "J0^T (Lambda0 Omega (PD + feed-forward) + p + Omega-bar F_d) + N0^T (A (-kvj dq) + g)");
+  };
+  law_at_random_states(331, kSamples, observe, p3::initial_q(), 10.0, judge);
 }
 
 // The closed-loop run with the pin of its law: the ticks, if any, at which the torque was not
 // expected_torque() at that tick's State and Goal (pinned_run.hpp).
-using Run = PinnedRun<p3::Result>;
-const Run& run(const Hw2Api& api) {
-  return pinned_run<p3::Result>(api.identity, 0, kLawTol, [&api](LawPin& pin) {
-    scenarios::RunOptions options;
-    options.duration = scenarios::p3::Scenario::kGradedDuration;  // as hw2-p3 --test replays it
-    // Where the law acts: [F; M] = Jbar0^T tau per direction, each marked by its selection, and N0^T tau.
-    pin.name_parts(task_parts({{"F_x (force-controlled)", "N"},
-                               {"F_y (motion-controlled)", "N"},
-                               {"F_z (motion-controlled)", "N"},
-                               {"M_x (motion-controlled)", "N m"},
-                               {"M_y (force-controlled)", "N m"},
-                               {"M_z (force-controlled)", "N m"}},
-                              7));
-    const auto pinned = [control = api.p3.control, &pin](const hw2::p3::State& s, const hw2::p3::Goal& goal) {
-      const Vector7d tau = control(s, goal);
-      pin.see(s.t, expected_torque(s, goal), tau, [&s] { return task_split(s.Jbar0, s.N0); });
-      return tau;
-    };
-    return p3::run(pinned, options);
-  });
-}
+const auto kRuns = simulated_runs<p3::Result>(kLawTol, [](const Hw2Api& api, int, LawPin& pin) {
+  scenarios::RunOptions options;
+  options.duration = scenarios::p3::Scenario::kGradedDuration;  // as hw2-p3 --test replays it
+  // Where the law acts: [F; M] = Jbar0^T tau per direction, each marked by its selection, and N0^T tau.
+  pin.name_parts(task_parts({{"F_x (force-controlled)", "N"},
+                             {"F_y (motion-controlled)", "N"},
+                             {"F_z (motion-controlled)", "N"},
+                             {"M_x (motion-controlled)", "N m"},
+                             {"M_y (force-controlled)", "N m"},
+                             {"M_z (force-controlled)", "N m"}},
+                            7));
+  const auto split = [](const hw2::p3::State& s) { return task_split(s.Jbar0, s.N0); };
+  return p3::run(pinned_control<hw2::p3::State>(pin, api.p3.control, &expected_torque, split),
+                 options);
+});
+using Run = decltype(kRuns)::Run;
+const Run& run(const Hw2Api& api) { return kRuns.run(api); }
 
 // The reference's run: the problem set's law (the oracles) in the same scenario.
-const p3::Result& reference_run() {
-  static const Hw2Api oracles = oracle::reference_api();
-  return run(oracles).result;
-}
+const p3::Result& reference_run() { return kRuns.reference(); }
 
 // "90.1 deg".
 std::string format_degrees(double radians) {

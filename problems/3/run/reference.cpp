@@ -30,19 +30,14 @@ void members(cli::Assignments& set, const p3::Summary& s) {
   OPSPACE_MEMBER(s, tilt_rms);
   OPSPACE_MEMBER(s, x_min);
   OPSPACE_MEMBER(s, x_max);
-  OPSPACE_MEMBER(s, peak_torque);
-  OPSPACE_MEMBER(s, peak_torque_joint);
-  OPSPACE_MEMBER(s, clamped_steps);
-  OPSPACE_MEMBER(s, time_reached);
+  cli::run_totals(set, s);
 }
 #undef OPSPACE_MEMBER
 
 std::string declarations(const p3::Result& r) {
   std::ostringstream out;
-  out << "/// Simulated seconds of problem 3's reference run.\n"
-      << "inline constexpr double kP3Duration = " << p3::kDefaultDuration << ";\n\n"
-      << "/// solutions/' run of problem 3.\n";
-  cli::summary_function<p3::Summary>(out, "p3()", "opspace::scenarios::p3::Summary", {{"", r.summary}}, &members);
+  cli::one_run_declarations(out, "3", "3", p3::kDefaultDuration, "opspace::scenarios::p3::Summary", r.summary,
+                            &members);
   return out.str();
 }
 
@@ -88,9 +83,7 @@ std::string fragment(const p3::Result& r) {
 }  // namespace
 
 cli::ReferenceText reference_run_3() {
-  opspace::scenarios::RunOptions options;
-  options.duration = p3::kDefaultDuration;
-  const p3::Result r = p3::run(&opspace::hw2::p3::control, options);
-  if (!r.failure.empty()) throw std::runtime_error("problem 3's reference run stopped early: " + r.failure);
+  const p3::Result r = cli::reference_result("3", p3::kDefaultDuration,
+                                               [](const auto& options) { return p3::run(&opspace::hw2::p3::control, options); });
   return {{"problems/3/run/scenario.hpp"}, declarations(r), {{"p3-reference", fragment(r)}}};
 }

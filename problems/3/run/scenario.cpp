@@ -48,12 +48,7 @@ void Scenario::summarise(Result& result, const Model&, const Simulation&) const 
   s.x_min = 1e9;
   s.x_max = -1e9;
   for (const Sample& sample : result.samples) {
-    for (int i = 0; i < 7; ++i) {
-      if (std::abs(sample.tau(i)) > s.peak_torque) {
-        s.peak_torque = std::abs(sample.tau(i));
-        s.peak_torque_joint = i;
-      }
-    }
+    add_peak_torque(s, sample.tau);
     const bool pushing = sample.tool_force.x() > kTouching;
     if (pushing && !touched) {
       touched = true;

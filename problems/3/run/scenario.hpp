@@ -18,6 +18,7 @@
 #include "problems/3/contract.hpp"
 #include "opspace/math/constants.hpp"
 #include <problems/2/run/scenario.hpp>
+#include "opspace/scenarios/summary.hpp"
 
 namespace opspace::scenarios {
 
@@ -121,7 +122,7 @@ struct Sample {
 };
 
 /// What a run measured; errors are taken after kSettleTime.
-struct Summary {
+struct Summary : RunTotals {  // peak torque, clamped steps, time reached
   double first_contact_time = -1.0;  ///< first sample with the tool pushing (s); -1: never
   /// samples after kSettleTime at which the tool did not push on the plane
   long contact_lost_samples = 0;
@@ -141,10 +142,6 @@ struct Summary {
   double tilt_rms = 0.0;             ///< RMS of the same (rad)
   double x_min = 0.0;                ///< smallest x of link7's origin after kSettleTime (m)
   double x_max = 0.0;                ///< largest x of link7's origin after kSettleTime (m)
-  double peak_torque = 0.0;          ///< max |tau_i| requested over the run (N m)
-  int peak_torque_joint = 0;  ///< the joint of that maximum (0-based)
-  long clamped_steps = 0;            ///< joint-steps whose torque was clamped to an effort limit
-  double time_reached = 0.0;         ///< simulated time at the end (s)
 };
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded

@@ -1,7 +1,5 @@
 // Graded tests of problem 4. Two kinds:
-// - the analysis (questions i-iv): at theta = (0, 90 deg, 0) and at random members of the arm's
-//   singular families, against closed forms of the geometry (derived below and in
-//   guide.md), from the library's Jv, Jw and Hessians of the tip;
+// - the analysis (questions i-iv): analysis.cpp;
 // - question v: the law at random states against the equation written out here, and the
 //   closed loop on the Bullet simulation, beside the plain operational-space controller,
 //   measured only on the problem set's law: every tick of the run is compared with the law's
@@ -15,7 +13,8 @@
 #include <limits>
 #include <map>
 
-#include "pinned_run.hpp"
+#include "simulated_runs.hpp"
+#include "analysis.hpp"
 #include "answers.hpp"
 #include "judge/oracles.hpp"
 #include "run_figure.hpp"
@@ -33,11 +32,6 @@ using hw2::p4::Kinematics;
 using hw2::p4::Target;
 using opspace::SingularityType;
 
-// Directions come from 3x3 SVDs: round-off ~1e-15. At these configurations the vanishing
-// singular values are round-off and the others at least ~0.1, so any correct method returns
-// the subspaces to ~1e-12; 1e-8 accepts them all and rejects every wrong subspace (whose
-// projector differs at order 1).
-constexpr double kDirTol = 1e-8;
 // The law is a few products of 3x3 matrices: 1e-6 relative, as in problem 1b.
 constexpr double kLawTol = 1e-6;
 constexpr int kSamples = 6;
@@ -48,204 +42,6 @@ constexpr double kEffortLimit = p4::kPeakTorqueMax;
 // controllable. The self-motion potential (same gains) needs a few tenths of a second to
 // leave the lock. 2 s leaves room for both; the run lasts p4::kDuration = 3 s.
 constexpr double kReachBound = p4::kReachTimeMax;
-
-const Model& rrr() {
-  static const Model model = load_urdf(robot_path(p4::kRobotFile));
-  return model;
-}
-
-Kinematics at(const Eigen::Vector3d& q) {
-  Data data(rrr());
-  return p4::kinematics(rrr(), data, q);
-}
-
-std::string deg(const Eigen::Vector3d& q) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "theta = (%.1f, %.1f, %.1f) deg", q(0) / kDeg, q(1) / kDeg, q(2) / kDeg);
-  return buffer;
-}
-
-// A configuration of the arm with the closed forms of its singular directions. The links are
-// 0.5 m each, the shoulder 0.35 m up; r = 0.5 (cos q2 + cos(q2 + q3)) is the tip's distance
-// from the joint-1 axis. Joints 2 and 3 move the tip in the arm's vertical plane; joint 1
-// moves it along the plane's normal n = (-sin q1, cos q1, 0), by r.
-struct Case {
-  std::string what;
-  Eigen::Vector3d q;
-  Eigen::MatrixXd singular;  // 3 x m closed-form singular directions
-  std::vector<SingularityType> types;  // of each column
-  bool straight_up = false;  // theta2 = 90 deg, theta3 = 0: the problem set's arm, turned about Z0 or not
-};
-
-Eigen::Vector3d plane_normal(double q1) { return Eigen::Vector3d(-std::sin(q1), std::cos(q1), 0.0); }
-
-std::vector<Case> cases() {
-  std::vector<Case> out;
-  // The problem set: straight up. Only X0 moves the tip; Z0 elbow lock (Type I), Y0 overhead
-  // lock (Type II).
-  out.push_back({"the problem set's configuration", p4::singular_q(),
-                 (Eigen::MatrixXd(3, 2) << 0, 0, 0, 1, 1, 0).finished(),
-                 {SingularityType::kTypeI, SingularityType::kTypeII}, true});
-  testing::Random rng(seed_for(401));
-  for (int k = 0; k < 2; ++k) {
-    // Elbow lock alone: q3 = 0, |q2| <= 60 deg so r = cos q2 >= 0.5. The tip cannot move along
-    // the stretched arm e = (cos q1 cos q2, sin q1 cos q2, sin q2); folding the elbow (a
-    // self-motion) pulls it back along e at second order: Type I.
-    const double q1 = rng.uniform(-kPi, kPi), q2 = rng.uniform(-60, 60) * kDeg;
-    out.push_back({"a stretched arm (elbow lock)", Eigen::Vector3d(q1, q2, 0.0),
-                   Eigen::Vector3d(std::cos(q1) * std::cos(q2), std::sin(q1) * std::cos(q2), std::sin(q2)),
-                   {SingularityType::kTypeI}});
-    // Overhead lock alone: q3 = 180 deg - 2 q2 puts the tip on the joint-1 axis (r = 0) with the
-    // elbow bent by 20-80 deg. The only self-motion, joint 1, spins the arm about the vertical
-    // through the tip: the tip never moves along n, at any order: Type II.
-    const double a = rng.uniform(-kPi, kPi), b = rng.uniform(50, 80) * kDeg;
-    out.push_back({"a bent arm with its tip above the base (overhead lock)", Eigen::Vector3d(a, b, kPi - 2.0 * b),
-                   plane_normal(a), {SingularityType::kTypeII}});
-    // Both, with joint 1 anywhere: the problem set's configuration turned about Z0.
-    const double c = rng.uniform(-kPi, kPi);
-    Eigen::MatrixXd both(3, 2);
-    both << Eigen::Vector3d::UnitZ(), plane_normal(c);
-    out.push_back({"the straight-up arm turned about Z0", Eigen::Vector3d(c, 90 * kDeg, 0.0), both,
-                   {SingularityType::kTypeI, SingularityType::kTypeII}, true});
-  }
-  // Regular: elbow bent by 70-100 deg, tip at least 0.1 m from the joint-1 axis (r = 0.47 m, 0.11 m).
-  out.push_back({"a regular configuration", Eigen::Vector3d(0.7, 20 * kDeg, 70 * kDeg), Eigen::MatrixXd(3, 0), {}});
-  out.push_back({"a regular configuration", Eigen::Vector3d(-2.0, -30 * kDeg, -100 * kDeg), Eigen::MatrixXd(3, 0), {}});
-  return out;
-}
-
-Eigen::Matrix3d projector(const Eigen::Ref<const Eigen::MatrixXd>& U) { return U.lazyProduct(U.transpose()); }
-
-// The student's directions as a projector; false (and a finding) if count is impossible.
-bool projector_of(const hw2::p4::Directions& d, const std::string& what, Check& check, Eigen::Matrix3d& P) {
-  if (!check.that(d.count >= 0 && d.count <= 3, what + ": count = " + std::to_string(d.count) + " is not 0-3"))
-    return false;
-  P = projector(d.u.leftCols(d.count));
-  return true;
-}
-
-void degrees_of_freedom(const Hw2Api& api, Check& check) {
-  for (const Case& c : cases()) {
-    const double expected = 3.0 - static_cast<double>(c.singular.cols());
-    if (!check.near("tip degrees of freedom at " + deg(c.q) + " (" + c.what + ")", expected,
-                    api.p4.degrees_of_freedom(at(c.q)), 0.0,
-                    "Count the singular values of Jv above kTolerance * sigma_max: the rank of Jv"))
-      return;
-  }
-}
-
-void singular_directions(const Hw2Api& api, Check& check) {
-  for (const Case& c : cases()) {
-    const std::string where = deg(c.q) + " (" + c.what + ")";
-    const hw2::p4::Directions d = api.p4.singular_directions(at(c.q));
-    if (!check.near("number of singular directions at " + where, static_cast<double>(c.singular.cols()), d.count,
-                    0.0, "One per vanishing singular value of Jv"))
-      return;
-    Eigen::Matrix3d P;
-    if (!projector_of(d, "singular directions", check, P)) return;
-    // u u^T does not depend on the sign of u, nor on the basis of a 2-D subspace.
-    if (!check.near("u u^T of the singular directions at " + where, projector(c.singular), P, kDirTol,
-                    "The singular directions are the left singular vectors (columns of U) whose singular "
-                    "value vanishes, unit and orthogonal"))
-      return;
-  }
-}
-
-void orthogonal_directions(const Hw2Api& api, Check& check) {
-  for (const Case& c : cases()) {
-    const std::string where = deg(c.q) + " (" + c.what + ")";
-    const Kinematics k = at(c.q);
-    Eigen::Matrix3d P;
-    const hw2::p4::Directions moving = api.p4.moving_directions(k);
-    if (!projector_of(moving, "moving directions", check, P)) return;
-    // range(Jv) is the orthogonal complement of the singular directions.
-    if (!check.near("u u^T of the moving directions at " + where,
-                    Eigen::Matrix3d::Identity() - projector(c.singular), P, kDirTol,
-                    "The tip moves along the directions orthogonal to the singular ones: the columns of U "
-                    "with non-vanishing singular values"))
-      return;
-    // Joint 1 turns about Z0, joints 2 and 3 about (sin q1, -cos q1, 0): the tip rotates about
-    // these two axes only, whatever the configuration (Jw has rank 2; no roll about the arm).
-    const hw2::p4::Directions axes = api.p4.rotation_axes(k);
-    if (!projector_of(axes, "rotation axes", check, P)) return;
-    Eigen::MatrixXd W(3, 2);
-    W << Eigen::Vector3d::UnitZ(), -plane_normal(c.q(0));
-    if (!check.near("u u^T of the rotation axes at " + where, projector(W), P, kDirTol,
-                    "Angular motion: the range of Jw, spanned by the joint axes Z0 and (sin q1, -cos q1, 0)"))
-      return;
-  }
-}
-
-const char* name(SingularityType t) {
-  switch (t) {
-    case SingularityType::kNone: return "kNone";
-    case SingularityType::kTypeI: return "kTypeI";
-    case SingularityType::kTypeII: return "kTypeII";
-  }
-  return "?";
-}
-
-bool label(const Hw2Api& api, const Kinematics& k, const Eigen::Vector3d& u, SingularityType expected,
-           const std::string& where, const std::string& meaning, Check& check) {
-  // Both signs of u: a direction's type does not depend on its sign (C_-u = -C_u).
-  for (double sign : {1.0, -1.0}) {
-    const SingularityType got = api.p4.singularity_type(k, sign * u);
-    if (!check.that(got == expected, "type of u = " + format(sign * u) + " at " + where + ": expected " +
-                                         name(expected) + ", computed " + name(got) + ". " + meaning))
-      return false;
-  }
-  return true;
-}
-
-// The problem set's configuration first, then the same arm turned about Z0 by a random angle c
-// (cases()), so that types looked up for theta = (0, 90 deg, 0) alone cannot pass. Turning the
-// whole arm about Z0 turns its geometry with it: Z0 stays the elbow lock, the overhead lock is
-// the normal n = (-sin c, cos c, 0) of the arm's plane (Y0 at c = 0), and the tip moves along
-// the plane's horizontal (cos c, sin c, 0) (X0 at c = 0).
-void types_of_the_straight_up_arm(const Hw2Api& api, Check& check) {
-  for (const Case& c : cases()) {
-    if (!c.straight_up) continue;
-    const Kinematics k = at(c.q);
-    const std::string where = deg(c.q) + " (" + c.what + ")";
-    if (!label(api, k, Eigen::Vector3d::UnitZ(), SingularityType::kTypeI, where,
-               "Folding the elbow is a self-motion (Jv dq = 0 at first order) that lowers the tip: the elbow "
-               "lock is Type I",
-               check))
-      return;
-    if (!label(api, k, plane_normal(c.q(0)), SingularityType::kTypeII, where,
-               "No self-motion (joint 1, or the elbow folding in the arm's plane) moves the tip across the plane, "
-               "even at second order: the overhead lock is Type II",
-               check))
-      return;
-    if (!label(api, k, Eigen::Vector3d(std::cos(c.q(0)), std::sin(c.q(0)), 0.0), SingularityType::kNone, where,
-               "The horizontal of the arm's plane is not singular: joints 2 and 3 move the tip along it", check))
-      return;
-  }
-}
-
-void types_elsewhere(const Hw2Api& api, Check& check) {
-  for (const Case& c : cases()) {
-    if (c.straight_up) continue;  // the previous test
-    const std::string where = deg(c.q) + " (" + c.what + ")";
-    const Kinematics k = at(c.q);
-    for (Eigen::Index j = 0; j < c.singular.cols(); ++j) {
-      const bool elbow = c.types[static_cast<std::size_t>(j)] == SingularityType::kTypeI;
-      if (!label(api, k, c.singular.col(j), c.types[static_cast<std::size_t>(j)], where,
-                 elbow ? "An elbow lock: folding the elbow retracts the tip along the stretched arm"
-                       : "An overhead lock: the self-motion only spins the arm about the tip's vertical",
-                 check))
-        return;
-    }
-    // A direction the tip moves along is not singular: for the first singular column u, the
-    // tip can move along any unit vector orthogonal to all singular ones.
-    const Eigen::Matrix3d free = Eigen::Matrix3d::Identity() - projector(c.singular);
-    Eigen::Index best = 0;
-    free.colwise().norm().maxCoeff(&best);
-    if (!label(api, k, free.col(best).normalized(), SingularityType::kNone, where,
-               "A direction orthogonal to the singular ones is in range(Jv): not singular", check))
-      return;
-  }
-}
 
 // The law of question v, the oracle of the law test.
 Eigen::Vector3d expected_torque(Target target, const hw2::p4::State& s, const hw2::p4::Goal& goal) {
@@ -282,21 +78,17 @@ void law(const Hw2Api& api, Check& check) {
 
 // A closed-loop run toward one target (~0.1 s), with the pin of its law: the ticks, if any, at
 // which the torque was not expected_torque() at that tick's State and Goal (pinned_run.hpp).
-using Run = PinnedRun<p4::Result>;
-const Run& run(const Hw2Api& api, Target target) {
-  return pinned_run<p4::Result>(api.identity, static_cast<int>(target), kLawTol, [&api, target](LawPin& pin) {
-    scenarios::RunOptions options;
-    options.duration = scenarios::p4::Scenario::kGradedDuration;  // as hw2-p4 --test replays it
-    // Where the law acts: the tip force Jbar_v^T tau per direction, and N^T tau (the State's robust N).
-    pin.name_parts(task_parts({{"the tip force F_x", "N"}, {"the tip force F_y", "N"}, {"the tip force F_z", "N"}}, 3));
-    const auto pinned = [control = api.p4.control, &pin](Target aim, const hw2::p4::State& s, const hw2::p4::Goal& goal) {
-      const Eigen::Vector3d tau = control(aim, s, goal);
-      pin.see(s.t, expected_torque(aim, s, goal), tau, [&s] { return task_split(s.Jbar_v, s.N); });
-      return tau;
-    };
-    return p4::run(target, pinned, options);
-  });
-}
+const auto kRuns = simulated_runs<p4::Result>(kLawTol, [](const Hw2Api& api, int variant, LawPin& pin) {
+  scenarios::RunOptions options;
+  options.duration = scenarios::p4::Scenario::kGradedDuration;  // as hw2-p4 --test replays it
+  // Where the law acts: the tip force Jbar_v^T tau per direction, and N^T tau (the State's robust N).
+  pin.name_parts(point_task_parts(3));
+  const auto split = [](const hw2::p4::State& s) { return task_split(s.Jbar_v, s.N); };
+  return p4::run(static_cast<Target>(variant),
+                 pinned_control<hw2::p4::State>(pin, api.p4.control, &expected_torque, split), options);
+});
+using Run = decltype(kRuns)::Run;
+const Run& run(const Hw2Api& api, Target target) { return kRuns.run(api, static_cast<int>(target)); }
 
 const p4::Result& run_plain(Target target) {
   static std::map<int, p4::Result> cache;
@@ -322,10 +114,7 @@ std::string millimetres(double metres) {
 }
 
 // The reference's run toward `target`: the problem set's law (the oracles) in the same scenario.
-const p4::Result& reference_run(Target target) {
-  static const Hw2Api oracles = oracle::reference_api();
-  return run(oracles, target).result;
-}
+const p4::Result& reference_run(Target target) { return kRuns.reference(static_cast<int>(target)); }
 
 // The tip's distance to x_d (m), the series whose last 5 mm crossing is the reach time.
 // (problems/4/run/scenario.hpp, which the programs' --test replay shares)
@@ -401,35 +190,9 @@ void reaches(Target target, const Hw2Api& api, Check& check) {
 Problem problem_4() {
   using namespace p4_graded;
   namespace id = test_id::p4;
-  return {"4",
-          "3R elbow arm: singularities, analysed and controlled (simulated)",
-          {
-              {id::kRank, "i. the tip has one degree of freedom at theta = (0, 90 deg, 0): the rank of Jv", 2,
-               "Take the SVD of Jv and count the singular values above kTolerance * sigma_max.",
-               degrees_of_freedom},
-              {id::kDirections,
-               "ii. the singular directions are Y0 and Z0 at theta = (0, 90 deg, 0), the left null space of Jv "
-               "elsewhere",
-               3,
-               "A singular direction is a direction of the tip's space, so it is a column of U (Jv = U S V^T), "
-               "not of V, which lives in joint space.",
-               singular_directions},
-              {id::kDirectionLeft,
-               "iii. X0 is the only direction left for the tip, which can still rotate about Y0 and Z0", 2,
-               "The moving directions are the other columns of U; the rotation axes come from the SVD of Jw.",
-               orthogonal_directions},
-              {id::kStraightUpTypes,
-               "iv. the straight-up arm (theta = (0, 90 deg, 0), or turned about Z0) has a Type I elbow lock along "
-               "Z0 and a Type II overhead lock across its plane",
-               2,
-               "Test the self-motions only: the null-space basis Nb of Jv, then C = Nb^T H_u Nb, from the Kinematics "
-               "given (the arm may be turned about Z0).",
-               types_of_the_straight_up_arm},
-              {id::kTypesElsewhere,
-               "iv. a stretched elbow is a Type I singularity and a tip above the base a Type II one", 2,
-               "The type is a property of the direction and the configuration: use H_u = sum_k u_k H[k] and the "
-               "null space of Jv at that configuration.",
-               types_elsewhere},
+  // Questions i-iv (analysis.cpp), then v.
+  std::vector<GradedTest> tests = analysis_tests();
+  const std::vector<GradedTest> v = {
               {id::kLaw, "v. the controller applies Jv^T F + N^T (A (-kpj (q - q_d) - kvj dq) + g) with each target's "
                "potential",
                3,
@@ -450,7 +213,9 @@ Problem problem_4() {
                "Along Y0 the arm's plane must first turn to face Y0: drive joint 1 toward 90 deg in the null "
                "space.",
                [](const Hw2Api& api, Check& check) { reaches(Target::kAlongY0, api, check); }, "hw2-p4 y"},
-          }};
+  };
+  tests.insert(tests.end(), v.begin(), v.end());
+  return {"4", "3R elbow arm: singularities, analysed and controlled (simulated)", tests};
 }
 
 namespace oracle {

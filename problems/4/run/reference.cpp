@@ -44,10 +44,7 @@ Runs run_targets() {
 void members(cli::Assignments& set, const p4::Summary& s) {
   OPSPACE_MEMBER(s, final_error);
   OPSPACE_MEMBER(s, reach_time);
-  OPSPACE_MEMBER(s, peak_torque);
-  OPSPACE_MEMBER(s, peak_torque_joint);
-  OPSPACE_MEMBER(s, clamped_steps);
-  OPSPACE_MEMBER(s, time_reached);
+  cli::run_totals(set, s);
 }
 #undef OPSPACE_MEMBER
 

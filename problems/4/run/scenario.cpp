@@ -16,12 +16,7 @@ void Scenario::summarise(Result& result, const Model&, const Simulation&) const 
   Summary& s = result.summary;
   if (result.samples.empty()) return;
   for (const Sample& sample : result.samples) {
-    for (int i = 0; i < 3; ++i) {
-      if (std::abs(sample.tau(i)) > s.peak_torque) {
-        s.peak_torque = std::abs(sample.tau(i));
-        s.peak_torque_joint = i;
-      }
-    }
+    add_peak_torque(s, sample.tau);
   }
   s.final_error = (result.samples.back().x - x_d).norm();
   // The first instant after which the error never again exceeds kReachTolerance.

@@ -16,6 +16,7 @@
 #include "opspace/algorithms/opspace.hpp"
 #include "opspace/scenarios/common.hpp"
 #include "opspace/scenarios/loop.hpp"
+#include "opspace/scenarios/summary.hpp"
 #include "opspace/simulation/simulation.hpp"
 
 namespace opspace::scenarios {
@@ -105,13 +106,9 @@ struct Sample {
 };
 
 /// What a run measured.
-struct Summary {
+struct Summary : RunTotals {  // peak torque, clamped steps, time reached
   double final_error = 0.0;   ///< |x - x_d| at the end (m)
   double reach_time = -1.0;   ///< from when on |x - x_d| <= kReachTolerance (s); -1: never
-  double peak_torque = 0.0;   ///< max |tau_i| requested over the run (N m)
-  int peak_torque_joint = 0;  ///< the joint of that maximum (0-based)
-  long clamped_steps = 0;     ///< joint-steps whose torque was clamped to the effort limit
-  double time_reached = 0.0;  ///< simulated time at the end (s)
 };
 
 using Result = RunResult<Sample, Summary>;  ///< what a run recorded

@@ -116,8 +116,15 @@ void start_replay(Options& options, const std::string& problem, double graded_du
 /// report's figure of QUANTITY, which a replay reproduces.
 void print_final(const Options& options, const std::string& quantity, double value, const std::string& unit);
 
+/// The usage of a program of one scenario (run_program) to stdout (code 0) or stderr: its
+/// options, `what` it runs (a line), its default `duration`; --live where it has a `live` lab.
+/// Returns `code`.
+int scenario_usage(const char* program, int code, const std::string& what, double duration, bool live);
+
 /// Prints on stderr that this build has no live lab and how to get it; returns 2.
 int no_live(const char* program);
+/// Prints on stderr that problem `problem` has no live lab (its folder declares no LAB); returns 2.
+int no_lab(const char* program, const std::string& problem);
 
 /// Returns body(); an exception instead prints "program: what" on stderr and returns 1.
 int guarded(const char* program, const std::function<int()>& body);

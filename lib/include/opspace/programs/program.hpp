@@ -43,9 +43,10 @@ struct ScenarioProgram {
   std::function<void(const Result&, double duration, const std::string& csv)> summary;
   /// With --test: the final values of the graded test's series (print_final), of a run with samples.
   std::function<void(const Options&, const Result&)> finals;
-  /// The plots of a run of the scenario (live: with the law in force at its end).
+  /// The plots of a run of the scenario (live: with the law in force at its end); none if empty.
   std::function<std::vector<opspace::plot::Figure>(const Result&, const Scenario&)> figures;
-  std::function<opspace::replay::Scene(const Result&, const Scenario&)> replay_scene;  ///< its 3D replay
+  /// Its 3D replay; none if empty (a problem without PICTURES).
+  std::function<opspace::replay::Scene(const Result&, const Scenario&)> replay_scene;
 #ifdef OPSPACE_LIVE
   /// The live lab of the scenario, named after the program.
   std::function<std::unique_ptr<opspace::live::LoopLab<Scenario>>(const std::string& name)> lab;
@@ -66,6 +67,7 @@ int run_parsed(const char* argv0, Options& options, const ScenarioProgram<Scenar
   std::cout << (options.live && !program.live_heading.empty() ? program.live_heading : program.heading) << "\n";
   if (options.live) {
 #ifdef OPSPACE_LIVE
+    if (!program.lab) return no_lab(argv0, program.problem);  // its folder declares no LAB
     return guarded(argv0, [&] {
       const auto lab = program.lab(program.name);
       return serve_live(
@@ -81,6 +83,8 @@ int run_parsed(const char* argv0, Options& options, const ScenarioProgram<Scenar
     const typename ScenarioProgram<Scenario>::Result result = opspace::scenarios::run(scenario, options.run);
     program.summary(result, options.run.duration, options.run.csv_path);
     if (!result.samples.empty()) program.finals(options, result);
+    // A problem without PICTURES: no plots and no replay, the exit code finish()'s.
+    if (!program.figures || !program.replay_scene) return result.samples.empty() || !result.failure.empty() ? 1 : 0;
     return finish(
         options, prefix, result, [&] { return program.figures(result, scenario); },
         [&] { return program.replay_scene(result, scenario); });

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <iosfwd>
+#include <ostream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +15,8 @@
 #include <Eigen/Core>
 
 #include <opspace/programs/verdict.hpp>
+#include <opspace/scenarios/common.hpp>
+#include <opspace/scenarios/summary.hpp>
 
 namespace cli {
 
@@ -59,6 +63,38 @@ void summary_function(std::ostream& out, const std::string& signature, const std
     if (!condition.empty()) out << "  }\n";
   }
   out << "  return s;\n}\n\n";
+}
+
+/// A problem's reference run: run(options) over `duration` simulated seconds with solutions/'
+/// functions. Throws std::runtime_error naming problem `key` if it stopped early.
+template <class Run>
+auto reference_result(const std::string& key, double duration, Run run) {
+  opspace::scenarios::RunOptions options;
+  options.duration = duration;
+  auto result = run(options);
+  if (!result.failure.empty())
+    throw std::runtime_error("problem " + key + "'s reference run stopped early: " + result.failure);
+  return result;
+}
+
+/// The declarations of a problem of one reference run: kP<KEY>Duration = `duration`, and
+/// `type p<key>()`, its Summary `s` (summary_function).
+template <class Summary, class Members>
+void one_run_declarations(std::ostream& out, const std::string& key, const std::string& upper_key, double duration,
+                          const std::string& type, const Summary& s, Members members) {
+  out << "/// Simulated seconds of problem " << key << "'s reference run.\n"
+      << "inline constexpr double kP" << upper_key << "Duration = " << duration << ";\n\n"
+      << "/// solutions/' run of problem " << key << ".\n";
+  summary_function<Summary>(out, "p" + key + "()", type, {{"", s}}, members);
+}
+
+/// set("member", s.member) for the members every Summary shares (scenarios::RunTotals), in the
+/// order the problems' members() end with.
+inline void run_totals(Assignments& set, const opspace::scenarios::RunTotals& s) {
+  set("peak_torque", s.peak_torque);
+  set("peak_torque_joint", s.peak_torque_joint);
+  set("clamped_steps", s.clamped_steps);
+  set("time_reached", s.time_reached);
 }
 
 // The docs' fragments, worded as the guides.

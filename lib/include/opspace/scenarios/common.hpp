@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "opspace/scenarios/scenario_check.hpp"
+
 namespace opspace::scenarios {
 
 /// Settings of one closed-loop run.
@@ -30,6 +32,7 @@ struct GainOverrides {
   /// Sets goal.kpx, kvx, kvj to those overridden.
   template <class Goal>
   void apply(Goal& goal) const {
+    static_assert(check::gains<Goal>());
     if (!std::isnan(kpx)) goal.kpx = kpx;
     if (!std::isnan(kvx)) goal.kvx = kvx;
     if (!std::isnan(kvj)) goal.kvj = kvj;

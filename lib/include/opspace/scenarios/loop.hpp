@@ -14,6 +14,9 @@
 ///   s.what()                            the run's name in the watchdog's message ("problem 2")
 ///   s.csv_columns(), s.csv_row(sample)  the CSV log
 ///   s.summarise(result, model, sim)     the Summary of a finished run
+///   S::kGradedDuration                  simulated seconds of a graded run and of a --test replay
+/// and its Sample has `t` and `tau`, its Summary `time_reached` and `clamped_steps` (derived from
+/// RunTotals, scenarios/summary.hpp). Loop<S> checks them at compile time (scenario_check.hpp).
 #pragma once
 
 #include <cmath>
@@ -28,6 +31,8 @@
 #include "opspace/model/model.hpp"
 #include "opspace/model/urdf.hpp"
 #include "opspace/scenarios/common.hpp"
+#include "opspace/scenarios/scenario_check.hpp"
+#include "opspace/scenarios/summary.hpp"
 #include "opspace/scenarios/watchdog.hpp"
 #include "opspace/simulation/closed_loop.hpp"
 #include "opspace/simulation/simulation.hpp"
@@ -76,6 +81,8 @@ Result run_closed_loop(Simulation& sim, const std::string& what, const std::vect
 /// the live lab may change between ticks.
 template <class Scenario>
 class Loop {
+  static_assert(check::scenario<Scenario>());
+
  public:
   using Sample = typename Scenario::Sample;
   using Observer = typename Scenario::Observer;
