@@ -242,8 +242,16 @@ std::vector<std::string> extract(Stream& in, int dest) {
         close_all();
         throw Refused("an entry cannot be written, or is there twice: " + shown(text));
       }
-      for (;;) {  // its chunks, counted as they come
-        const std::size_t n = number(in.line());
+      for (;;) {  // its chunks, counted as they come; or the reader's error, part way
+        const std::string line = in.line();
+        if (line.rfind("error ", 0) == 0) {
+          std::string why(std::min<std::size_t>(number(line.substr(6)), kLongestPath), '\0');
+          in.exact(why.data(), why.size());
+          if (out >= 0) ::close(out);
+          close_all();
+          throw Refused("not a zip it can read: " + shown(why));
+        }
+        const std::size_t n = number(line);
         if (n == 0) break;
         total += n;
         if (total > kLargestTotal) {

@@ -201,7 +201,8 @@ ClassStudent read_student(const std::string& name, const Json& j) {
     // The files' notes (deploy/results.cmake): names, at most a few dozen of a bounded length.
     const Json files = extra.value("submission", Json::object());
     if (files.is_object())
-      for (auto [key, into] : {std::pair<const char*, std::vector<std::string>*>{"missing", &s.missing}, {"misnamed", &s.misnamed}})
+      for (auto [key, into] : {std::pair<const char*, std::vector<std::string>*>{"missing", &s.missing}, {"misnamed", &s.misnamed},
+                               {"refused", &s.notes}})
         if (files.contains(key) && files[key].is_array())
           for (const Json& file : files[key])
             if (file.is_string() && into->size() < 40) into->push_back(unescaped(file.get<std::string>()).substr(0, 200));

@@ -64,7 +64,9 @@ struct ClassStudent {
   bool unprotected = false;
   std::string not_graded;  ///< why the grading gave no tests ("" when it did)
   std::vector<std::string> refused;  ///< what of its results.json the page refused, each noted once
-  std::vector<std::string> notes;    ///< what else needs a look (a Gradescope export's status, its score)
+  /// What else needs a look: a zip of the submission refused (extra_data.submission.refused), a
+  /// Gradescope export's status or score.
+  std::vector<std::string> notes;
   /// The exercise files missing from the submission (graded as the stubs), and those named
   /// otherwise, as collect_submission.sh noted them (results.json's extra_data.submission).
   std::vector<std::string> missing, misnamed;
