@@ -15,12 +15,13 @@
 #   grader, which runs as root, may read), and so are files under a linked folder;
 # - nothing of the submission is trusted: names are shown cleaned of control characters, at
 #   most 1 MiB + 1 byte of a file is copied (the grader refuses files over 1 MiB);
-# - with UNZIP (apps/hw2-unzip) and UNZIPPED (a folder that does not exist yet; scripts/regrade
-#   gives them), each .zip of the submission (at most 4) is opened by UNZIP into UNZIPPED/<k>, and
-#   its files are read as if they were the submission's, in a folder named after the zip
-#   ("hw2.zip/hw2/p1a.cpp"); a zip UNZIP refuses (a link, a path leaving its folder, a zip bomb,
-#   a broken zip ...) is noted "Your zip '...' was refused, not unzipped: why" and none of its
-#   files is read. Without them a .zip is ignored, with the other files.
+# - with UNZIP (hw2-unzip, apps/unzip.cpp) and UNZIPPED (a folder that does not exist yet;
+#   scripts/regrade gives them), each .zip of the submission (at most 4) is opened by UNZIP into
+#   UNZIPPED/<k>, and its files are read as if they were the submission's, in a folder named
+#   after the zip (hw2.zip holding hw2/ reads as a folder hw2.zip holding hw2/); a zip UNZIP
+#   refuses (a link, a path leaving its folder, a zip bomb, a broken zip ...) is noted "Your zip
+#   '...' was refused, not unzipped: why" and none of its files is read. Without them a .zip is
+#   ignored, with the other files.
 # Exit code 0 whenever OUT was written (even with every file missing).
 set -euo pipefail
 

@@ -50,7 +50,7 @@ if(notes MATCHES "(^|\n)Not graded, the name is not one the grader reads: ([^\n]
   set(misnamed "${names}")
 endif()
 string(REGEX REPLACE "^, " "" missing "${missing}")
-# A zip refused (collect_submission.sh, apps/hw2-unzip): its whole note, HTML-escaped.
+# A zip refused (collect_submission.sh, hw2-unzip, apps/unzip.cpp): its whole note, HTML-escaped.
 set(refused "")
 string(REGEX MATCHALL "\nYour zip '[^\n]*' was refused, not unzipped: [^\n]*" found "\n${notes}")
 foreach(line IN LISTS found)

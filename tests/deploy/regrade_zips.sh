@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# A zip in a submission, opened as hostile (apps/hw2-unzip, through collect_submission.sh). First
+# A zip in a submission, opened as hostile (hw2-unzip, apps/unzip.cpp, through collect_submission.sh). First
 # hw2-unzip alone on each hostile zip, each refused within 10 s (the reader's limit is 30 s; each
 # takes well under a second) with its reason, writing nothing:
 #   bomb       1 GiB of zeros deflated to about 1 MB (the bound: 64 MiB uncompressed)
-#   traversal  an entry '../p1a.cpp';  absolute  an entry '/tmp/...';  symlink  a link to /etc/passwd
+#   traversal  an entry up a folder (.. then p1a.cpp);  absolute  an entry '/tmp/...';  symlink  a link to /etc/passwd
 #   device     a character device entry;  many  1001 empty files (the bound: 1000)
 #   corrupt    a zip cut short
 # a zip holding a zip, whose inner zip is left out with a note, and a good zip extracted whole.
