@@ -348,7 +348,9 @@ void write_class_page(std::ostream& out, const std::vector<ClassStudent>& studen
       << kStyle << "</style>\n</head>\n<body>\n<h1>The class: " << students.size() << " student(s)</h1>\n"
       << "<p>" << (options.source.empty() ? "Built from each student's results.json" : html_text(options.source))
       << " (docs/instructor.md, \"Seeing the class\")"
-      << (options.anonymous ? "; students numbered in the order of their folders' names" : "; each name links to the student's report")
+      << (options.anonymous          ? "; students numbered in the order of their folders' names"
+          : options.source.empty() ? "; each name links to the student's report"
+                                   : "")
       << ".</p>\n";
   attention_section(out, students, options, data);
   mistakes_section(out, students, ranked, options, data);
