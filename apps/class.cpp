@@ -9,7 +9,7 @@
 // (gradescope_export.hpp); a metadata file that cannot be read stops the page, with its line. An
 // export as it comes (no results.json in it, not regraded) is drawn from the results Gradescope
 // stored in its metadata (:results:), and DIR/gradebook.csv is written from them too, a row per
-// member; an export that stores none writes nothing (exit 1: regrade it).
+// member (not with --anonymous); an export that stores none writes nothing (exit 1: regrade it).
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -34,7 +34,8 @@ namespace {
 int usage(std::ostream& out, int code) {
   out << "usage: hw2-class FOLDER [--anonymous] [--out DIR]\n"
          "  writes DIR/class.html and DIR/mistakes.csv (DIR: FOLDER by default) from the results.json of\n"
-         "  each student folder of FOLDER; --anonymous numbers the students and names none\n";
+         "  each student folder of FOLDER; --anonymous numbers the students and names none. On a Gradescope\n"
+         "  export not regraded, from the results it stored, and DIR/gradebook.csv too (not with --anonymous)\n";
   return code;
 }
 
@@ -206,7 +207,8 @@ int main(int argc, char** argv) {
     if (g::is_gradescope_export(folder) && !g::holds_results(folder)) {
       const StoredClass stored = stored_class(folder);
       students = stored.students, options.source = stored.source;
-      ok = write(out_dir + "/gradebook.csv", [&](std::ostream& o) { write_gradebook(o, stored); });
+      // Not with --anonymous: the gradebook names everybody, and an anonymous page's folder is for a lecture.
+      if (!options.anonymous) ok = write(out_dir + "/gradebook.csv", [&](std::ostream& o) { write_gradebook(o, stored); });
     }
 #endif
     if (students.empty()) students = by_member(opspace::grading::read_class(folder), folder);

@@ -179,3 +179,9 @@ grep -q '^Carol,1006,,submission_5,2,,,,,2,0,"Gradescope.s score 5 is not' "$boo
 grep -q '^submission_7,,,submission_7,,,,,,,,"not graded: not in submission_metadata.yml' "$book" || fail "the unlisted folder's row"
 [ "$(wc -l < "$book")" -eq 9 ] || fail "the gradebook is not a header and 8 rows"
 echo "hw2-class drew a Gradescope export from its stored results, a row per member, each hostile entry costing its own row"
+# --anonymous: a page for a lecture names nobody, and no gradebook is written beside it.
+mkdir "$work/lecture"
+"$class" "$ex" --anonymous --out "$work/lecture" > /dev/null 2>&1 || fail "hw2-class --anonymous on the export failed"
+[ ! -e "$work/lecture/gradebook.csv" ] || fail "an anonymous page's folder holds the gradebook"
+if grep -q 'Ann\|Mallory' "$work/lecture/class.html"; then fail "the anonymous page names a student"; fi
+echo "ok   --anonymous: no name on the page, no gradebook"
