@@ -3,7 +3,7 @@
 # grader reads (hw2-grade --exercises OUT), and says what it did, one note per line, in
 # OUT/notes.txt. Used by run_autograder (Gradescope) and scripts/regrade.
 #
-#   bash deploy/collect_submission.sh SUBMISSION OUT STUBS
+#   bash deploy/collect_submission.sh SUBMISSION OUT STUBS [UNZIP UNZIPPED]
 #
 # - p<key>.cpp, one per problem of problems.txt (p1a.cpp ...), are taken from the submission's
 #   top folder, or from the one subfolder that holds them (a zipped folder, exercises/,
@@ -14,15 +14,22 @@
 # - only regular files are read: a symbolic link is refused (it could point at anything the
 #   grader, which runs as root, may read), and so are files under a linked folder;
 # - nothing of the submission is trusted: names are shown cleaned of control characters, at
-#   most 1 MiB + 1 byte of a file is copied (the grader refuses files over 1 MiB).
+#   most 1 MiB + 1 byte of a file is copied (the grader refuses files over 1 MiB);
+# - with UNZIP (hw2-unzip, apps/unzip.cpp) and UNZIPPED (a folder that does not exist yet;
+#   scripts/regrade gives them), each .zip of the submission (at most 4) is opened by UNZIP into
+#   UNZIPPED/<k>, and its files are read as if they were the submission's, in a folder named
+#   after the zip (hw2.zip holding hw2/ reads as a folder hw2.zip holding hw2/); a zip UNZIP
+#   refuses (a link, a path leaving its folder, a zip bomb, a broken zip ...) is noted "Your zip
+#   '...' was refused, not unzipped: why" and none of its files is read. Without them a .zip is
+#   ignored, with the other files.
 # Exit code 0 whenever OUT was written (even with every file missing).
 set -euo pipefail
 
-if [ $# -ne 3 ]; then
-  echo "usage: collect_submission.sh SUBMISSION OUT STUBS" >&2
+if [ $# -ne 3 ] && [ $# -ne 5 ]; then
+  echo "usage: collect_submission.sh SUBMISSION OUT STUBS [UNZIP UNZIPPED]" >&2
   exit 2
 fi
-submission=$1 out=$2 stubs=$3
+submission=$1 out=$2 stubs=$3 unzip=${4:-} unzipped=${5:-}
 # The exercise files: p<key>.cpp for each problem of the list (problems.txt).
 source "$(dirname "${BASH_SOURCE[0]}")/../scripts/problems.sh"
 expected=("${OPSPACE_KEYS[@]/#/p}")
@@ -60,6 +67,40 @@ if [ -d "$submission" ]; then
     case "/$rel" in */__MACOSX/* | */.DS_Store | */._* | */.git/*) continue ;; esac
     if [ -L "$path" ]; then links+=("$rel"); else files+=("$rel"); fi
   done < <(find "$submission" -mindepth 1 -maxdepth 6 \( -type f -o -type l \) -print0 2>/dev/null | head -z -n 500)
+fi
+
+# Each zip, opened by hw2-unzip (its limits and checks: apps/unzip.cpp) into a folder of its own;
+# its files join the submission's under the zip's name, read from where they were written.
+declare -A where=()
+if [ -n "$unzip" ]; then
+  kept=() zips=()
+  for rel in "${files[@]}"; do
+    lower=$(printf '%s' "$rel" | tr '[:upper:]' '[:lower:]')
+    if [[ "$lower" == *.zip ]]; then zips+=("$rel"); else kept+=("$rel"); fi
+  done
+  files=("${kept[@]}")
+  k=0
+  for rel in "${zips[@]}"; do
+    k=$((k + 1))
+    if [ "$k" -gt 4 ]; then
+      note "Your zip '$(shown "$rel")' was not opened: at most 4 zips of a submission are."
+      continue
+    fi
+    mkdir -p "$unzipped"
+    said=""
+    if said=$("$unzip" "$submission/$rel" "$unzipped/$k" 2> /dev/null); then
+      while IFS= read -r line; do
+        [ -z "$line" ] || note "In your zip '$(shown "$rel")': $(shown "$line")"
+      done <<< "$said"
+      while IFS= read -r -d '' path; do
+        inner="$rel/${path#"$unzipped/$k"/}"
+        files+=("$inner")
+        where[$inner]=$path
+      done < <(find "$unzipped/$k" -mindepth 1 -maxdepth 6 -type f -print0 2>/dev/null | head -z -n 500)
+    else
+      note "Your zip '$(shown "$rel")' was refused, not unzipped: $(shown "$(printf '%s' "$said" | head -n 1)")."
+    fi
+  done
 fi
 
 # The folder holding the most expected files wins (then the shallowest): a submission made of
@@ -104,7 +145,7 @@ for e in "${expected[@]}"; do
     [ -n "$source" ] && note "$e was taken from '$(shown "$source")'."
   fi
   if [ -n "$source" ]; then
-    head -c "$max_bytes" "$submission/$source" > "$out/$e"
+    head -c "$max_bytes" "${where[$source]:-$submission/$source}" > "$out/$e"
     used+=("$source")
   else
     cp "$stubs/$e" "$out/$e"

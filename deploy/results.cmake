@@ -34,8 +34,8 @@ set(notes "")
 if(DEFINED NOTES AND EXISTS "${NOTES}")
   file(READ "${NOTES}" notes)
 endif()
-# extra_data.submission: the exercise files missing (or symbolic links) and the files named
-# otherwise, from the notes' own sentences (collect_submission.sh), for the class page's "Look
+# extra_data.submission: the exercise files missing (or symbolic links), the files named
+# otherwise and the zips refused, from the notes' own sentences (collect_submission.sh), for the class page's "Look
 # at these first" (grader/trusted/class/class_results.hpp). Names as the notes show them, HTML-escaped.
 set(missing "")
 string(REGEX MATCHALL "\np[0-9a-z]+\\.cpp( is missing from your submission|: '[^\n]*' is a symbolic link)" found "\n${notes}")
@@ -50,7 +50,17 @@ if(notes MATCHES "(^|\n)Not graded, the name is not one the grader reads: ([^\n]
   set(misnamed "${names}")
 endif()
 string(REGEX REPLACE "^, " "" missing "${missing}")
-set(submission "{\"missing\": [${missing}], \"misnamed\": [${misnamed}]}")
+# A zip refused (collect_submission.sh, hw2-unzip, apps/unzip.cpp): its whole note, HTML-escaped.
+set(refused "")
+string(REGEX MATCHALL "\nYour zip '[^\n]*' was refused, not unzipped: [^\n]*" found "\n${notes}")
+foreach(line IN LISTS found)
+  string(STRIP "${line}" line)
+  html_escape("${line}" line)
+  json_string("${line}" line)
+  string(APPEND refused ", ${line}")
+endforeach()
+string(REGEX REPLACE "^, " "" refused "${refused}")
+set(submission "{\"missing\": [${missing}], \"misnamed\": [${misnamed}], \"refused\": [${refused}]}")
 html_escape("${notes}" notes)
 html_escape("${REASON}" REASON)
 

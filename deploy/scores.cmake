@@ -72,6 +72,15 @@ else()
   set(note "no results.json")
 endif()
 
+# A zip of the submission refused (collect_submission.sh, deploy/results.cmake): the note says
+# which and why, its files were not graded.
+if(note STREQUAL "" AND EXISTS "${JSON}")
+  string(JSON refused ERROR_VARIABLE no_refused GET "${json}" extra_data submission refused 0)
+  if(NOT no_refused)
+    set(note "${refused}")
+  endif()
+endif()
+
 # CSV, with OWASP's advice on CSV injection: the student's name is the name of a folder, which
 # may be "=HYPERLINK(...)" or hold a line break. A field that begins with = + - @ (after any
 # spaces), their full-width forms, a tab or a carriage return gets a ' in front, so that no

@@ -44,11 +44,12 @@ source "$REPO/scripts/secret_side.sh"  # what step 5 removes, by place (scripts/
 # (OPSPACE_GRADER_PICTURE_PACKAGES: libcairo2-dev, libpng-dev, fonts-dejavu-core), named here whatever the
 # bundle holds: Gradescope's and PrairieLearn's students see them.
 packages=(libtinyxml-dev util-linux "${OPSPACE_GRADER_PICTURE_PACKAGES[@]}")
-# Not the benchmarks' library, nor the live lab's server, nor yaml-cpp (an export's metadata is read by
-# scripts/regrade, never by the bundle): the bundle grades one submission; it serves no page.
+# Not the benchmarks' library, nor the live lab's server, nor yaml-cpp and libarchive (an export's
+# metadata and a zip a student uploaded are read by scripts/regrade, never by the bundle: Gradescope
+# unzips): the bundle grades one submission; it serves no page.
 for p in "${OPSPACE_PACKAGES[@]}"; do
   case "$p" in
-    libbenchmark-dev | libcpp-httplib-dev | libyaml-cpp-dev) ;;
+    libbenchmark-dev | libcpp-httplib-dev | libyaml-cpp-dev | libarchive-dev) ;;
     *) [[ " ${packages[*]} " == *" $p "* ]] || packages+=("$p") ;;
   esac
 done

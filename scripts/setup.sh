@@ -10,10 +10,11 @@ OPSPACE_BUILD="$OPSPACE_ROOT/build/release"
 # nlohmann-json3-dev (results.json, the replay and explorer pages' data) are the grader's;
 # libcpp-httplib-dev serves the programs' --live page (docs/live.md; the Gradescope bundle
 # leaves it out); libyaml-cpp-dev reads a Gradescope export's submission_metadata.yml
-# (scripts/regrade, hw2-class; the bundle leaves it out too).
+# (scripts/regrade, hw2-class; the bundle leaves it out too); libarchive-dev opens a zip a
+# student uploaded, for scripts/regrade (hw2-unzip; the bundle leaves it out: Gradescope unzips).
 OPSPACE_PACKAGES=(g++ make cmake ninja-build pkg-config libeigen3-dev doctest-dev libbullet-dev
                   liburdfdom-dev libbenchmark-dev libssl-dev libseccomp-dev nlohmann-json3-dev
-                  libcpp-httplib-dev libyaml-cpp-dev)
+                  libcpp-httplib-dev libyaml-cpp-dev libarchive-dev)
 # The autograder's pictures: cairo draws each failed simulated test's plot into results.json,
 # in DejaVu Sans, and libpng writes it (grader/trusted/report/plot_png.hpp). Where the reference is
 # (the instructor's repository, the Gradescope bundle); a student handout has no simulated test

@@ -47,7 +47,7 @@ std::string results(const std::string& mistake, const std::string& t = "0 1 2", 
 
 std::string page(const std::vector<grading::ClassStudent>& students, bool anonymous) {
   std::ostringstream out;
-  grading::write_class_page(out, students, {anonymous});
+  grading::write_class_page(out, students, {anonymous, ""});
   return out.str();
 }
 

@@ -108,6 +108,7 @@ std::vector<std::string> attention(const ClassStudent& s) {
   // Numbers of its results.json the page cannot draw (class_results.hpp): the file was not the
   // grader's as written, or the grader wrote what it should not have.
   for (const std::string& refused : s.refused) why.push_back("results.json: " + refused);
+  why.insert(why.end(), s.notes.begin(), s.notes.end());
   return why;
 }
 
@@ -345,8 +346,11 @@ void write_class_page(std::ostream& out, const std::vector<ClassStudent>& studen
   data["anonymous"] = options.anonymous;
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>opspace: the class</title>\n<style>"
       << kStyle << "</style>\n</head>\n<body>\n<h1>The class: " << students.size() << " student(s)</h1>\n"
-      << "<p>Built from each student's results.json (docs/instructor.md, \"Seeing the class\")"
-      << (options.anonymous ? "; students numbered in the order of their folders' names" : "; each name links to the student's report")
+      << "<p>" << (options.source.empty() ? "Built from each student's results.json" : html_text(options.source))
+      << " (docs/instructor.md, \"Seeing the class\")"
+      << (options.anonymous          ? "; students numbered in the order of their folders' names"
+          : options.source.empty() ? "; each name links to the student's report"
+                                   : "")
       << ".</p>\n";
   attention_section(out, students, options, data);
   mistakes_section(out, students, ranked, options, data);

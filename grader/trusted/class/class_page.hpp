@@ -12,6 +12,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "class/class_results.hpp"
@@ -22,6 +23,7 @@ namespace opspace::grading {
 /// order, with no name or link anywhere (a page to show in a lecture).
 struct ClassPageOptions {
   bool anonymous = false;
+  std::string source;  ///< what the results are, said at the top ("": each student's results.json)
 };
 
 void write_class_page(std::ostream& out, const std::vector<ClassStudent>& students, const ClassPageOptions& options);

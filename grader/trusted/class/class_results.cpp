@@ -107,12 +107,13 @@ ClassRun run(const Json& j, std::string& bad) {
   return r;
 }
 
-// j[key] as a score: 0 when absent, and when beyond kLargestNumber (noted as `whose`).
+// j[key] as a score: 0 when absent, and when not a number or beyond kLargestNumber (noted as
+// `whose`; a stored result read from YAML can hold .nan).
 double score(const Json& j, const char* key, const std::string& whose, Refusals& refused) {
   const double v = number(j, key, 0.0);
-  if (drawable(v)) return v;
-  refused.note(whose + (whose.empty() ? "its " : ": its ") + key + " " + shown(v) + " refused (beyond +-" + shown(kLargestNumber) +
-               "), counted 0");
+  if (!std::isnan(v) && drawable(v)) return v;
+  refused.note(whose + (whose.empty() ? "its " : ": its ") + key + " " + shown(v) + " refused (" +
+               (std::isnan(v) ? std::string("not a number") : "beyond +-" + shown(kLargestNumber)) + "), counted 0");
   return 0.0;
 }
 
@@ -170,11 +171,18 @@ std::string read_text(const fs::path& path) {
 }  // namespace
 
 ClassStudent read_student(const std::string& name, const std::string& text) {
+  const Json j = Json::parse(text, nullptr, false);
+  if (j.is_object()) return read_student(name, j);
+  ClassStudent s;
+  s.name = name, s.not_graded = "its results.json is not valid JSON";
+  return s;
+}
+
+ClassStudent read_student(const std::string& name, const Json& j) {
   ClassStudent s;
   s.name = name;
-  const Json j = Json::parse(text, nullptr, false);
   if (!j.is_object()) {
-    s.not_graded = "its results.json is not valid JSON";
+    s.not_graded = "its results are not a JSON object";
     return s;
   }
   Refusals refused;
@@ -193,7 +201,8 @@ ClassStudent read_student(const std::string& name, const std::string& text) {
     // The files' notes (deploy/results.cmake): names, at most a few dozen of a bounded length.
     const Json files = extra.value("submission", Json::object());
     if (files.is_object())
-      for (auto [key, into] : {std::pair<const char*, std::vector<std::string>*>{"missing", &s.missing}, {"misnamed", &s.misnamed}})
+      for (auto [key, into] : {std::pair<const char*, std::vector<std::string>*>{"missing", &s.missing}, {"misnamed", &s.misnamed},
+                               {"refused", &s.notes}})
         if (files.contains(key) && files[key].is_array())
           for (const Json& file : files[key])
             if (file.is_string() && into->size() < 40) into->push_back(unescaped(file.get<std::string>()).substr(0, 200));
@@ -206,7 +215,10 @@ ClassStudent read_student(const std::string& name, const std::string& text) {
   return s;
 }
 
-std::vector<ClassStudent> read_class(const std::string& folder) {
+namespace {
+
+// Each student's name and results file in `folder` (unsorted); throws if it cannot be read.
+std::vector<std::pair<std::string, fs::path>> results_in(const std::string& folder) {
   std::vector<std::pair<std::string, fs::path>> found;  // name, results.json
   std::error_code ec, entry;  // an entry that cannot be told a folder or a file is neither
   for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
@@ -216,6 +228,16 @@ std::vector<ClassStudent> read_class(const std::string& folder) {
     else if (e.is_regular_file(entry) && e.path().extension() == ".json") found.emplace_back(e.path().stem().string(), e.path());
   }
   if (ec) throw std::runtime_error("cannot read " + folder + ": " + ec.message());
+  return found;
+}
+
+}  // namespace
+
+bool holds_results(const std::string& folder) { return !results_in(folder).empty(); }
+
+std::vector<ClassStudent> read_class(const std::string& folder) {
+  std::vector<std::pair<std::string, fs::path>> found = results_in(folder);
+  std::error_code entry;
   if (found.empty())
     throw std::runtime_error("no results in " + folder + ": no folder in it holds a results.json, and no NAME.json is in it "
                              "(a Gradescope export is graded first: scripts/regrade EXPORT OUT)");

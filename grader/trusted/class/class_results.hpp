@@ -7,6 +7,8 @@
 /// the page cannot draw is refused and noted (ClassStudent::refused), costing its own row alone.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -62,6 +64,9 @@ struct ClassStudent {
   bool unprotected = false;
   std::string not_graded;  ///< why the grading gave no tests ("" when it did)
   std::vector<std::string> refused;  ///< what of its results.json the page refused, each noted once
+  /// What else needs a look: a zip of the submission refused (extra_data.submission.refused), a
+  /// Gradescope export's status or score.
+  std::vector<std::string> notes;
   /// The exercise files missing from the submission (graded as the stubs), and those named
   /// otherwise, as collect_submission.sh noted them (results.json's extra_data.submission).
   std::vector<std::string> missing, misnamed;
@@ -70,6 +75,13 @@ struct ClassStudent {
 
 /// The student `name` of a results.json's text `json` (an invalid text: not graded, saying so).
 ClassStudent read_student(const std::string& name, const std::string& json);
+
+/// The same of results already read as JSON (a Gradescope export's stored ones): an object, or
+/// the student is not graded, saying so.
+ClassStudent read_student(const std::string& name, const nlohmann::json& results);
+
+/// Whether `folder` holds any results read_class() reads.
+bool holds_results(const std::string& folder);
 
 /// Every student of `folder`: each subfolder holding a results.json (named after the
 /// subfolder; its report.txt, if any, is the report) and each other *.json file (named after

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -11,6 +12,7 @@
 namespace opspace::grading {
 
 namespace fs = std::filesystem;
+using Json = nlohmann::json;
 
 namespace {
 
@@ -77,7 +79,10 @@ bool is_gradescope_export(const std::string& folder) {
   return fs::is_regular_file(fs::path(folder) / kExportMetadata, ec);
 }
 
-std::vector<ExportSubmission> read_export_metadata(const std::string& path) {
+namespace {
+
+// The metadata file's root, read whole (at most kLargestMetadata).
+YAML::Node load(const std::string& path) {
   std::error_code ec;
   const std::uintmax_t size = fs::file_size(path, ec);
   if (ec) throw ExportError(path + ": cannot be read: " + ec.message());
@@ -87,14 +92,16 @@ std::vector<ExportSubmission> read_export_metadata(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream content;
   if (!(in && content << in.rdbuf())) throw ExportError(path + ": cannot be read");
-
-  YAML::Node root;
   try {
-    root = YAML::Load(content.str());
+    return YAML::Load(content.str());
   } catch (const YAML::Exception& e) {  // ParserException, and DeepRecursion for a nesting too deep
     fail(path, e.mark, "not YAML: " + e.msg);
   }
-  std::vector<ExportSubmission> out;
+}
+
+// Calls each(submission, entry) for every entry of the metadata `root`, in the file's order.
+template <class Each>
+void each_entry(const std::string& path, const YAML::Node& root, Each each) {
   try {
     if (!root.IsMap()) fail(path, root.Mark(), "not a Gradescope export's metadata: no map of submission folders");
     std::set<std::string> seen;
@@ -116,12 +123,104 @@ std::vector<ExportSubmission> read_export_metadata(const std::string& path) {
                                   text(path, field(m, "email"), s.folder + ": :email:")});
         }
       }
-      out.push_back(std::move(s));
+      each(std::move(s), entry.second);
     }
   } catch (const YAML::Exception& e) {  // a conversion yaml-cpp refused: still the file's fault
     fail(path, e.mark, e.msg);
   }
+}
+
+// Why one submission's stored results are not taken.
+struct Refused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A scalar as JSON. Quoted or tagged, a text; plain, YAML's null, booleans and numbers (Ruby's
+// Psych, which writes the export, quotes a text that would read as one), else a text.
+Json scalar(const YAML::Node& n) {
+  const std::string& v = n.Scalar();
+  if (n.Tag() != "?") return v;
+  if (v.empty() || v == "~" || v == "null" || v == "Null" || v == "NULL") return nullptr;
+  if (v == "true" || v == "True" || v == "TRUE") return true;
+  if (v == "false" || v == "False" || v == "FALSE") return false;
+  constexpr double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [word, value] : {std::pair<const char*, double>{".inf", inf}, {".Inf", inf}, {".INF", inf}, {"+.inf", inf},
+                                    {"-.inf", -inf}, {"-.Inf", -inf}, {"-.INF", -inf}, {".nan", nan}, {".NaN", nan}, {".NAN", nan}})
+    if (v == word) return value;
+  if (std::string("0123456789+-.").find(v[0]) == std::string::npos) return v;
+  char* end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);  // 1e999 reads as infinite: the page refuses it
+  return end != v.c_str() && *end == '\0' ? Json(d) : Json(v);
+}
+
+// What has been walked of one submission's stored results.
+struct Budget {
+  std::size_t values = 0;
+  std::uintmax_t text = 0;
+};
+
+void count(Budget& b, std::size_t text) {
+  if (++b.values > kLargestStoredValues)
+    throw Refused("more than " + std::to_string(kLargestStoredValues) + " values (an alias repeated within an alias?)");
+  b.text += text;
+  if (b.text > kLargestStoredText) throw Refused("more than " + std::to_string(kLargestStoredText >> 20) + " MiB of text");
+}
+
+// `n` as JSON, within the budget. A key written as a Ruby symbol (":tests") is taken as "tests".
+Json converted(const YAML::Node& n, std::size_t depth, Budget& b) {
+  if (depth > kDeepestStoredResults) throw Refused("nested more than " + std::to_string(kDeepestStoredResults) + " deep");
+  count(b, n.IsScalar() ? n.Scalar().size() : 0);
+  if (n.IsScalar()) return scalar(n);
+  if (n.IsSequence()) {
+    Json out = Json::array();
+    for (const YAML::Node& e : n) out.push_back(converted(e, depth + 1, b));
+    return out;
+  }
+  if (!n.IsMap()) return nullptr;
+  Json out = Json::object();
+  for (const auto& e : n) {
+    if (!e.first.IsScalar()) throw Refused("a key that is not a text");
+    std::string key = e.first.Scalar();
+    count(b, key.size());
+    if (key.size() > 1 && key[0] == ':') key.erase(0, 1);
+    out[key] = converted(e.second, depth + 1, b);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<ExportSubmission> read_export_metadata(const std::string& path) {
+  std::vector<ExportSubmission> out;
+  each_entry(path, load(path), [&](ExportSubmission s, const YAML::Node&) { out.push_back(std::move(s)); });
   std::sort(out.begin(), out.end(), [](const ExportSubmission& a, const ExportSubmission& b) { return a.folder < b.folder; });
+  return out;
+}
+
+std::vector<StoredSubmission> read_stored_results(const std::string& path) {
+  std::vector<StoredSubmission> out;
+  each_entry(path, load(path), [&](ExportSubmission s, const YAML::Node& entry) {
+    StoredSubmission stored;
+    stored.submission = std::move(s);
+    const std::string& folder = stored.submission.folder;
+    stored.status = text(path, field(entry, "status"), folder + ": :status:");
+    const YAML::Node score = field(entry, "score");
+    if (score.IsDefined() && score.IsScalar() && scalar(score).is_number()) stored.score = scalar(score).get<double>();
+    const YAML::Node results = field(entry, "results");
+    stored.has_results = results.IsDefined() && !results.IsNull();
+    if (stored.has_results) {
+      try {
+        Budget budget;
+        stored.results = converted(results, 0, budget);
+      } catch (const Refused& e) {
+        stored.refused = std::string("its stored results were refused: ") + e.what();
+        stored.results = nullptr;
+      }
+    }
+    out.push_back(std::move(stored));
+  });
+  std::sort(out.begin(), out.end(),
+            [](const StoredSubmission& a, const StoredSubmission& b) { return a.submission.folder < b.submission.folder; });
   return out;
 }
 

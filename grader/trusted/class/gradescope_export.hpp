@@ -6,9 +6,15 @@
 /// each member of a submission gets a row of its own, with the submission's grade.
 /// The file is the instructor's, the names in it the students' own typing: a malformed file is
 /// an ExportError naming the file and the line, and every name is kept to one printable line.
+/// Each entry's :results: is the results.json Gradescope stored for it (its autograder's, which
+/// ran beside the student's code): read_stored_results() gives it as JSON, for hw2-class on an
+/// export not regraded, within bounds (kLargestStoredValues ...) that cost its own row alone.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,6 +40,28 @@ struct ExportSubmission {
   std::vector<Submitter> submitters;  ///< empty when the entry names nobody
 };
 
+/// The most values (YAML nodes, each alias's every repetition counted) one submission's stored
+/// results may hold: the grader's results.json holds some thousands (a run's series is one text),
+/// and an alias repeated inside an alias ("billion laughs") would otherwise be walked without end.
+inline constexpr std::size_t kLargestStoredValues = std::size_t{1} << 20;
+/// The deepest nesting of stored results taken: the grader's results.json nests 5 deep.
+inline constexpr std::size_t kDeepestStoredResults = 32;
+/// The most text (bytes) of one submission's stored results: as a results.json file read by the
+/// class page (class_results.hpp's kLargestResults, 16 MiB).
+inline constexpr std::uintmax_t kLargestStoredText = std::uintmax_t{16} << 20;
+
+/// A submission as the export stored its grade.
+struct StoredSubmission {
+  ExportSubmission submission;
+  std::string status;  ///< :status: ("processed" when its autograder ran), one printable line
+  /// :score:, Gradescope's (manual adjustments and late penalties in); NaN when absent or no number.
+  double score = std::numeric_limits<double>::quiet_NaN();
+  bool has_results = false;  ///< :results: is there, taken or not
+  nlohmann::json results;    ///< :results: as JSON: a plain scalar that reads as a number is a
+                             ///< double (.inf and 1e999 kept infinite, for the page to refuse)
+  std::string refused;       ///< why :results: was not taken ("" when it was, or is absent)
+};
+
 /// "FILE:LINE: what is wrong" (LINE from 1), or "FILE: what is wrong".
 struct ExportError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -45,6 +73,11 @@ bool is_gradescope_export(const std::string& folder);
 /// The submissions of the metadata file `path`, in the byte order of their folders' names.
 /// Throws ExportError when the file cannot be read, is not YAML, or is not an export's metadata.
 std::vector<ExportSubmission> read_export_metadata(const std::string& path);
+
+/// Every submission of the metadata file `path` with what Gradescope stored of its grade, in the
+/// byte order of their folders' names. Throws ExportError as read_export_metadata does; stored
+/// results beyond the bounds above are refused in their entry's `refused`, never the file.
+std::vector<StoredSubmission> read_stored_results(const std::string& path);
 
 /// How a member is shown on the class page: "name (SID sid, email)", the parts they have.
 std::string submitter_label(const Submitter& s);
