@@ -4,15 +4,14 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
 #include <vector>
 
+#include "report/png_file.hpp"
 #include "report/report_html.hpp"
 #include "common/student_text.hpp"
 
 #if OPSPACE_HAVE_CAIRO
 #include <cairo.h>
-#include <png.h>
 #endif
 
 namespace opspace::grading {
@@ -160,11 +159,8 @@ void sample(cairo_t* cr, double x, double y, Colour c, bool dashed, bool box) {
   cairo_set_dash(cr, nullptr, 0, 0);
 }
 
-// The picture's pixels as an 8-bit indexed PNG, written by libpng: a third of the bytes of
-// cairo's own 24-bit PNG (20-39 KB for a real run's figure), so that a grading's every picture
-// fits in results.json's 1 MB. The colours drawn are kept exactly; the blends of antialiased
-// edges are rounded to 16 levels a channel (11, 8, then 6 if they are more than 256: 6 levels
-// make 216 colours, which always fit).
+// The picture's pixels (CAIRO_FORMAT_RGB24: xRGB), as png_file.hpp's indexed PNG, the colours
+// drawn kept exactly.
 std::string indexed_png(cairo_surface_t* surface) {
   cairo_surface_flush(surface);
   const int width = cairo_image_surface_get_width(surface), height = cairo_image_surface_get_height(surface);
@@ -174,51 +170,9 @@ std::string indexed_png(cairo_surface_t* surface) {
   pixels.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   for (int y = 0; y < height; ++y) {
     const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
-    for (int x = 0; x < width; ++x) pixels.push_back(row[x] & 0xffffff);  // CAIRO_FORMAT_RGB24: xRGB
+    for (int x = 0; x < width; ++x) pixels.push_back(row[x] & 0xffffff);
   }
-  for (const int levels : {16, 11, 8, 6}) {
-    const auto rounded = [levels](std::uint32_t c) {
-      if (std::find(std::begin(kColours), std::end(kColours), c) != std::end(kColours)) return c;
-      std::uint32_t out = 0;
-      for (const int shift : {16, 8, 0}) {
-        const long step = std::lround(static_cast<double>(c >> shift & 0xff) * (levels - 1) / 255.0);
-        out |= static_cast<std::uint32_t>(std::lround(static_cast<double>(step) * 255.0 / (levels - 1))) << shift;
-      }
-      return out;
-    };
-    std::unordered_map<std::uint32_t, std::uint8_t> index;
-    std::vector<std::uint8_t> colormap, indices;  // RGB triplets; one index a pixel
-    indices.reserve(pixels.size());
-    bool fits = true;
-    for (const std::uint32_t c : pixels) {
-      const std::uint32_t q = rounded(c);
-      auto found = index.find(q);
-      if (found == index.end()) {
-        if (index.size() == 256) {
-          fits = false;
-          break;
-        }
-        found = index.emplace(q, static_cast<std::uint8_t>(index.size())).first;
-        colormap.insert(colormap.end(), {static_cast<std::uint8_t>(q >> 16), static_cast<std::uint8_t>(q >> 8),
-                                         static_cast<std::uint8_t>(q)});
-      }
-      indices.push_back(found->second);
-    }
-    if (!fits) continue;
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    image.width = static_cast<png_uint_32>(width), image.height = static_cast<png_uint_32>(height);
-    image.format = PNG_FORMAT_RGB_COLORMAP;
-    image.colormap_entries = static_cast<png_uint_32>(index.size());
-    png_alloc_size_t size = 0;
-    if (!png_image_write_to_memory(&image, nullptr, &size, 0, indices.data(), width, colormap.data()))
-      break;
-    std::string png(size, '\0');
-    if (!png_image_write_to_memory(&image, png.data(), &size, 0, indices.data(), width, colormap.data())) break;
-    png.resize(size);
-    return png;
-  }
-  throw std::runtime_error("libpng could not write a figure");
+  return grading::indexed_png(pixels, width, height, {std::begin(kColours), std::end(kColours)});
 }
 
 void draw(cairo_t* cr, const RunFigure& f) {
@@ -399,21 +353,5 @@ extern "C" const char* __lsan_default_options() { return "print_suppressions=0";
 std::string png_plot(const RunFigure&) { return ""; }
 
 #endif
-
-std::string base64(const std::string& bytes) {
-  static const char* kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
-    if (i + 1 < bytes.size()) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8;
-    if (i + 2 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 2]);
-    out += kDigits[(v >> 18) & 63];
-    out += kDigits[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? kDigits[(v >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? kDigits[v & 63] : '=';
-  }
-  return out;
-}
 
 }  // namespace opspace::grading

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "judge/figure.hpp"
+#include "report/png_file.hpp"  // base64(), for the callers that carry the picture
 
 namespace opspace::grading {
 
@@ -33,8 +34,5 @@ constexpr int kLeft = 80, kRight = 624, kTop = 52, kBottom = 252;
 /// grader was built without cairo (a student handout's, which has no simulated test:
 /// grader/CMakeLists.txt); the callers then leave the picture out.
 std::string png_plot(const RunFigure& figure);
-
-/// `bytes` in base64 (RFC 4648, with padding): for a data: URI.
-std::string base64(const std::string& bytes);
 
 }  // namespace opspace::grading
