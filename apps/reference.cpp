@@ -18,23 +18,25 @@
 #include <string>
 #include <vector>
 
-#include <opspace/programs/reference_text.hpp>
+#include "opspace/programs/reference_text.hpp"
 
 #include "reference.hpp"
 #include "reference_list.hpp"
 
-// Each problem's reference run: cli::ReferenceText reference_run_<key>() (problems/<key>/run/reference.cpp).
-#define OPSPACE_DECLARE_REFERENCE_RUN(key) cli::ReferenceText reference_run_##key();
+namespace programs = opspace::programs;
+
+// Each problem's reference run: programs::ReferenceText reference_run_<key>() (problems/<key>/run/reference.cpp).
+#define OPSPACE_DECLARE_REFERENCE_RUN(key) programs::ReferenceText reference_run_##key();
 OPSPACE_REFERENCE_RUNS(OPSPACE_DECLARE_REFERENCE_RUN)
 #undef OPSPACE_DECLARE_REFERENCE_RUN
 
-namespace hw2_reference {
+namespace opspace::programs {
 
 namespace {
 
 /// Every problem's reference run, in problems.txt's order.
-std::vector<cli::ReferenceText> run_all() {
-  std::vector<cli::ReferenceText> runs;
+std::vector<programs::ReferenceText> run_all() {
+  std::vector<programs::ReferenceText> runs;
 #define OPSPACE_RUN_REFERENCE(key) runs.push_back(reference_run_##key());
   OPSPACE_REFERENCE_RUNS(OPSPACE_RUN_REFERENCE)
 #undef OPSPACE_RUN_REFERENCE
@@ -49,17 +51,17 @@ int usage() {
 
 }  // namespace
 
-}  // namespace hw2_reference
+}  // namespace opspace::programs
 
 int main(int argc, char** argv) {
-  using namespace hw2_reference;
+  using namespace opspace::programs;
   const std::vector<std::string> args(argv + 1, argv + argc);
   try {
     if (args.size() == 3 && args[0] == "generate") {
       for (const std::string& path : {args[1], args[2]}) {
         std::filesystem::create_directories(std::filesystem::path(path).parent_path());
       }
-      const std::vector<cli::ReferenceText> runs = run_all();
+      const std::vector<programs::ReferenceText> runs = run_all();
       write_header(runs, args[1]);
       write_fragments(runs, args[2]);
       return 0;

@@ -6,15 +6,15 @@
 #include <string>
 #include <vector>
 
-#include <opspace/programs/reference_text.hpp>
+#include "opspace/programs/reference_text.hpp"
 
-namespace hw2_reference {
+namespace opspace::programs {
 
 /// reference_write.cpp: reference_runs.hpp, every problem's declarations in namespace reference.
-void write_header(const std::vector<cli::ReferenceText>& runs, const std::string& path);
+void write_header(const std::vector<programs::ReferenceText>& runs, const std::string& path);
 
 /// reference_write.cpp: the docs' fragments of every problem, each between its markers.
-void write_fragments(const std::vector<cli::ReferenceText>& runs, const std::string& path);
+void write_fragments(const std::vector<programs::ReferenceText>& runs, const std::string& path);
 
 /// reference_docs.cpp: `docs check` (write false) or `docs write`; the exit code.
 int docs(bool write, const std::string& dir, const std::string& fragments_path);
@@ -24,4 +24,4 @@ inline std::string marker(const std::string& name) {
 }
 inline std::string end_marker(const std::string& name) { return "<!-- end generated: " + name + " -->"; }
 
-}  // namespace hw2_reference
+}  // namespace opspace::programs

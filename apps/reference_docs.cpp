@@ -15,7 +15,7 @@
 
 #include "reference.hpp"
 
-namespace hw2_reference {
+namespace opspace::programs {
 
 namespace {
 
@@ -187,4 +187,4 @@ int docs(bool write, const std::string& dir, const std::string& fragments_path) 
   return stale > 0 ? 1 : 0;
 }
 
-}  // namespace hw2_reference
+}  // namespace opspace::programs

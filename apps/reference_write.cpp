@@ -11,7 +11,7 @@
 
 #include "reference.hpp"
 
-namespace hw2_reference {
+namespace opspace::programs {
 
 namespace {
 
@@ -45,7 +45,7 @@ std::string wrap_prose(const std::string& text) {
 
 }  // namespace
 
-void write_header(const std::vector<cli::ReferenceText>& runs, const std::string& path) {
+void write_header(const std::vector<programs::ReferenceText>& runs, const std::string& path) {
   std::ostringstream out;
   out << "// Generated at build time by hw2-reference (apps/reference.cpp, from each problem's\n"
          "// problems/<key>/run/reference.cpp): what solutions/ does on each scenario at the programs' default\n"
@@ -54,25 +54,25 @@ void write_header(const std::vector<cli::ReferenceText>& runs, const std::string
          "#include <iterator>\n"
          "#include <vector>\n\n";
   std::set<std::string> included;
-  for (const cli::ReferenceText& run : runs) {
+  for (const programs::ReferenceText& run : runs) {
     for (const std::string& header : run.includes) {
       if (included.insert(header).second) out << "#include <" << header << ">\n";
     }
   }
   out << "\nnamespace reference {\n\n";
-  for (const cli::ReferenceText& run : runs) out << run.declarations;
+  for (const programs::ReferenceText& run : runs) out << run.declarations;
   out << "}  // namespace reference\n";
   std::ofstream file(path);
   file << out.str();
   if (!file) throw std::runtime_error("cannot write " + path);
 }
 
-void write_fragments(const std::vector<cli::ReferenceText>& runs, const std::string& path) {
+void write_fragments(const std::vector<programs::ReferenceText>& runs, const std::string& path) {
   std::ofstream file(path);
-  for (const cli::ReferenceText& run : runs) {
+  for (const programs::ReferenceText& run : runs) {
     for (const auto& [name, text] : run.fragments) file << marker(name) << "\n" << wrap_prose(text) << end_marker(name) << "\n";
   }
   if (!file) throw std::runtime_error("cannot write " + path);
 }
 
-}  // namespace hw2_reference
+}  // namespace opspace::programs

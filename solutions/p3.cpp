@@ -1,5 +1,5 @@
 // Problem 3, reference solution: the equations of the problem set.
-#include <opspace/algorithms/euler_params.hpp>
+#include "opspace/algorithms/euler_params.hpp"
 #include <problems/3/contract.hpp>
 
 namespace opspace::hw2::p3 {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "build/library_answers.hpp"
-#include "problems/1a/tests.hpp"
+#include <problems/1a/tests.hpp>
 
 namespace opspace::grading::forbidden {
 

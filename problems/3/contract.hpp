@@ -14,7 +14,7 @@
 
 #include <Eigen/Dense>  // everything a student may need: inverse(), solvers, decompositions
 
-#include "problems/2/contract.hpp"
+#include <problems/2/contract.hpp>
 
 namespace opspace::hw2::p3 {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "build/library_answers.hpp"
-#include "problems/4/tests.hpp"
+#include <problems/4/tests.hpp>
 
 namespace opspace::grading::forbidden {
 

@@ -13,17 +13,17 @@
 #include <string>
 #include <vector>
 
-#include <opspace/algorithms/euler_params.hpp>
+#include "opspace/algorithms/euler_params.hpp"
 #include <problems/1b/contract.hpp>
 #include <problems/2/contract.hpp>
 #include <problems/3/contract.hpp>
 #include <problems/4/contract.hpp>
-#include <opspace/model/urdf.hpp>
+#include "opspace/model/urdf.hpp"
 #include <problems/1b/run/scenario.hpp>
 #include <problems/2/run/scenario.hpp>
 #include <problems/3/run/scenario.hpp>
 #include <problems/4/run/scenario.hpp>
-#include <opspace/simulation/simulation.hpp>
+#include "opspace/simulation/simulation.hpp"
 
 namespace {
 

@@ -13,7 +13,9 @@
 #include <problems/1b/run/scenario.hpp>
 #include <problems/4/run/command.hpp>
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
+
+namespace programs = opspace::programs;
 
 namespace {
 
@@ -45,27 +47,27 @@ Outcome run(std::vector<std::string> args, Parse parse) {
 }
 
 /// hw2-p2's parse (hw2-p3's is the same): defaults 10 s and out/hw2-p2.csv.
-Outcome p2(const std::vector<std::string>& args, cli::Options& options) {
+Outcome p2(const std::vector<std::string>& args, programs::Options& options) {
   options.run.duration = 10.0;
   options.run.csv_path = "out/hw2-p2.csv";
-  cli::Program program;
+  programs::Program program;
   program.usage = &usage;
-  return run(args, [&](int argc, char** argv) { return cli::parse(argc, argv, 1, program, options); });
+  return run(args, [&](int argc, char** argv) { return programs::parse(argc, argv, 1, program, options); });
 }
 
-Outcome p1(const std::vector<std::string>& args, cli::P1Command& command) {
-  return run(args, [&](int argc, char** argv) { return cli::parse_p1(argc, argv, &usage, command); });
+Outcome p1(const std::vector<std::string>& args, programs::P1Command& command) {
+  return run(args, [&](int argc, char** argv) { return programs::parse_p1(argc, argv, &usage, command); });
 }
 
 }  // namespace
 
 TEST_CASE("--duration takes a number of seconds up to the limit and quotes any other value") {
-  cli::Options options;
+  programs::Options options;
   CHECK(p2({"hw2-p2", "--duration", "2.5"}, options).code == -1);
   CHECK(options.run.duration == 2.5);
   // kMaxDuration itself is allowed: the interval is (0, kMaxDuration].
   CHECK(p2({"hw2-p2", "--duration", "600"}, options).code == -1);
-  CHECK(options.run.duration == cli::kMaxDuration);
+  CHECK(options.run.duration == programs::kMaxDuration);
   // strtod reads "inf", "nan" and "1e999" (as inf): accepted before, they made the run reserve
   // its samples for lround(inf) steps. 600.5 asks for more than kMaxDuration = 600.
   for (const char* value : {"0", "-1", "600.5", "1e7", "inf", "nan", "1e999", "4s", ""}) {
@@ -77,7 +79,7 @@ TEST_CASE("--duration takes a number of seconds up to the limit and quotes any o
 }
 
 TEST_CASE("an option without its value, or an empty --csv, is named in the refusal") {
-  cli::Options options;
+  programs::Options options;
   Outcome o = p2({"hw2-p2", "--no-plots", "--duration"}, options);
   CHECK(o.code == 2);
   CHECK(o.err == "hw2-p2: --duration needs a value after it\n");
@@ -102,18 +104,18 @@ TEST_CASE("hw2-p1 names its log after the part unless --csv names it, in any ord
   // The defaults of hw2-p1's usage text (in the repository's out/, wherever it runs); before, a
   // --csv given before --no-joint-damping was replaced by the no-damping default.
   const Case table[] = {
-      {{"hw2-p1", "1"}, Part::kTipPd, cli::output_path("hw2-p1-part1.csv")},
-      {{"hw2-p1", "3"}, Part::kDynamicallyConsistentNullspace, cli::output_path("hw2-p1-part3.csv")},
-      {{"hw2-p1", "compare"}, Part::kPseudoInverseNullspace, cli::output_path("hw2-p1-compare.csv")},
+      {{"hw2-p1", "1"}, Part::kTipPd, programs::output_path("hw2-p1-part1.csv")},
+      {{"hw2-p1", "3"}, Part::kDynamicallyConsistentNullspace, programs::output_path("hw2-p1-part3.csv")},
+      {{"hw2-p1", "compare"}, Part::kPseudoInverseNullspace, programs::output_path("hw2-p1-compare.csv")},
       {{"hw2-p1", "1", "--no-joint-damping"}, Part::kTipPdWithoutJointDamping,
-       cli::output_path("hw2-p1-part1-no-damping.csv")},
+       programs::output_path("hw2-p1-part1-no-damping.csv")},
       {{"hw2-p1", "1", "--csv", "run/a.csv", "--no-joint-damping"}, Part::kTipPdWithoutJointDamping, "run/a.csv"},
       {{"hw2-p1", "1", "--no-joint-damping", "--csv", "run/a.csv"}, Part::kTipPdWithoutJointDamping, "run/a.csv"},
   };
   for (const Case& c : table) {
     CAPTURE(c.args.size());
     CAPTURE(c.csv);
-    cli::P1Command command;
+    programs::P1Command command;
     CHECK(p1(c.args, command).code == -1);
     CHECK(command.part == c.part);
     CHECK(command.options.run.csv_path == c.csv);
@@ -121,7 +123,7 @@ TEST_CASE("hw2-p1 names its log after the part unless --csv names it, in any ord
 }
 
 TEST_CASE("hw2-p1 refuses --no-joint-damping outside PART 1, saying why") {
-  cli::P1Command command;
+  programs::P1Command command;
   for (const char* part : {"2", "3", "compare"}) {
     CAPTURE(part);
     const Outcome o = p1({"hw2-p1", part, "--no-joint-damping"}, command);
@@ -138,10 +140,10 @@ TEST_CASE("hw2-p1 refuses --no-joint-damping outside PART 1, saying why") {
 
 TEST_CASE("hw2-p4 runs z, y or both, the last choice counting, and takes no --csv") {
   using Target = opspace::hw2::p4::Target;
-  const auto parse = [](std::vector<std::string> args, cli::P4Command& command) {
-    return run(std::move(args), [&](int argc, char** argv) { return cli::parse_p4(argc, argv, &usage, command); });
+  const auto parse = [](std::vector<std::string> args, programs::P4Command& command) {
+    return run(std::move(args), [&](int argc, char** argv) { return programs::parse_p4(argc, argv, &usage, command); });
   };
-  cli::P4Command command;
+  programs::P4Command command;
   CHECK(parse({"hw2-p4"}, command).code == -1);
   CHECK(command.targets == std::vector<Target>{Target::kAlongZ0, Target::kAlongY0});
   CHECK(parse({"hw2-p4", "z", "y"}, command).code == -1);
@@ -153,17 +155,17 @@ TEST_CASE("hw2-p4 runs z, y or both, the last choice counting, and takes no --cs
 
 TEST_CASE("--live takes --port, a port number, and --port alone is refused by name") {
   // The fuzz target (tests/fuzz/fuzz_cli.cpp) found the first message without its quotes.
-  cli::Options options;
+  programs::Options options;
   CHECK(p2({"hw2-p2", "--live", "--port", "8080"}, options).code == -1);
   CHECK(options.live);
   CHECK(options.port == 8080);
-  cli::Options plain;
+  programs::Options plain;
   const Outcome alone = p2({"hw2-p2", "--port", "8080"}, plain);
   CHECK(alone.code == 2);
   CHECK(alone.err == "hw2-p2: '--port' applies to --live only (add --live)\n");
   for (const char* value : {"-1", "65536", "80x", ""}) {
     CAPTURE(value);
-    cli::Options o;
+    programs::Options o;
     const Outcome bad = p2({"hw2-p2", "--live", "--port", value}, o);
     CHECK(bad.code == 2);
     CHECK(bad.err == "hw2-p2: --port needs a port number from 0 (any free port) to 65535, not '" + std::string(value) + "'\n");
@@ -175,7 +177,7 @@ TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, neve
   // `hw2-p1 3 --test "NAME" --seed N`: it must parse, and start_replay then sets the graded
   // run's duration (p1b::Scenario::kGradedDuration: 10 s, one period of q_d). Seen to fail on the
   // parser before --test: "unknown argument '--test'", exit 2.
-  cli::P1Command command;
+  programs::P1Command command;
   const std::string name = "iv. in simulation PART3 holds the tip within 5 mm while q2 follows q_d";
   CHECK(p1({"hw2-p1", "3", "--test", name, "--seed", "41"}, command).code == -1);
   CHECK(command.options.test == name);
@@ -183,18 +185,18 @@ TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, neve
   command.options.run.duration = 3.0;
   std::ostringstream said;
   std::streambuf* saved = std::cout.rdbuf(said.rdbuf());
-  cli::start_replay(command.options, "1b", opspace::scenarios::p1b::Scenario::kGradedDuration);
+  programs::start_replay(command.options, "1b", opspace::scenarios::p1b::Scenario::kGradedDuration);
   std::cout.rdbuf(saved);
   CHECK(command.options.run.duration == 10.0);
   CHECK(said.str().find(name) != std::string::npos);
   // A seed is a positive whole number, as the grader's --seed; a replay lasts the graded run.
   for (const std::string bad : {"0", "-3", "x", ""}) {
-    cli::Options options;
+    programs::Options options;
     const Outcome o = p2({"hw2-p2", "--test", "t", "--seed", bad}, options);
     CHECK(o.code == 2);
     CHECK(o.err.find("--seed") != std::string::npos);
   }
-  cli::Options options;
+  programs::Options options;
   Outcome o = p2({"hw2-p2", "--test", "t", "--duration", "2"}, options);
   CHECK(o.code == 2);
   CHECK(o.err.find("'--duration' does not apply with '--test'") != std::string::npos);
@@ -202,12 +204,12 @@ TEST_CASE("--test and --seed replay a graded test: a name, a positive seed, neve
   CHECK(o.code == 2);
   CHECK(o.err.find("--test needs a value") != std::string::npos);
   // Without --test a seed would be printed and used for nothing.
-  cli::Options fresh;
+  programs::Options fresh;
   o = p2({"hw2-p2", "--seed", "41"}, fresh);
   CHECK(o.code == 2);
   CHECK_MESSAGE(o.err.find("'--seed' applies to --test only") != std::string::npos, o.err);
   // compare runs offline: --live is refused, naming it, never ignored (the ratio test's replay).
-  cli::P1Command compare;
+  programs::P1Command compare;
   o = p1({"hw2-p1", "compare", "--test", "iii. x", "--live"}, compare);
   CHECK(o.code == 2);
   CHECK_MESSAGE(o.err.find("'--live' does not apply to 'compare'") != std::string::npos, o.err);

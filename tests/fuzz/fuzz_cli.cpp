@@ -18,7 +18,9 @@
 #include <problems/1b/run/command.hpp>
 #include <problems/4/run/command.hpp>
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
+
+namespace programs = opspace::programs;
 
 namespace {
 
@@ -54,8 +56,8 @@ class Captured {
 };
 
 /// What parse() left in the options when the program goes on.
-void check_options(const cli::Options& o, bool needs_csv, const std::string& output) {
-  require(std::isfinite(o.run.duration) && o.run.duration > 0.0 && o.run.duration <= cli::kMaxDuration,
+void check_options(const programs::Options& o, bool needs_csv, const std::string& output) {
+  require(std::isfinite(o.run.duration) && o.run.duration > 0.0 && o.run.duration <= programs::kMaxDuration,
           "duration outside (0, kMaxDuration]: " + std::to_string(o.run.duration), output);
   require(!needs_csv || !o.run.csv_path.empty(), "no log path", output);
 }
@@ -76,10 +78,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   int code = -1;
   std::string output;
   if (program == "hw2-p1") {
-    cli::P1Command command;
+    programs::P1Command command;
     {
       Captured captured;
-      code = cli::parse_p1(argc, argv.data(), &usage, command);
+      code = programs::parse_p1(argc, argv.data(), &usage, command);
       output = captured.str();
     }
     if (code == -1) {
@@ -88,23 +90,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       require(part >= 1 && part <= 4, "no such part", output);
     }
   } else if (program == "hw2-p2" || program == "hw2-p3") {  // their main()s parse alike
-    cli::Options options;
+    programs::Options options;
     options.run.duration = 10.0;
     options.run.csv_path = "out/" + program + ".csv";
-    cli::Program p;
+    programs::Program p;
     p.usage = &usage;
     {
       Captured captured;
-      code = cli::parse(argc, argv.data(), 1, p, options);
+      code = programs::parse(argc, argv.data(), 1, p, options);
       output = captured.str();
     }
     if (code == -1) check_options(options, true, output);
   } else if (program == "hw2-p4") {
-    cli::P4Command command;
+    programs::P4Command command;
     command.options.run.duration = 3.0;
     {
       Captured captured;
-      code = cli::parse_p4(argc, argv.data(), &usage, command);
+      code = programs::parse_p4(argc, argv.data(), &usage, command);
       output = captured.str();
     }
     if (code == -1) {

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <opspace/model/model_text.hpp>
+#include "opspace/model/model_text.hpp"
 
 #include "model_checks.hpp"
 

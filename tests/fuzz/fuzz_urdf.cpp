@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include <opspace/model/urdf.hpp>
+#include "opspace/model/urdf.hpp"
 
 #include "model_checks.hpp"
 

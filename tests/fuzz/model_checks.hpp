@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include <opspace/model/model.hpp>
+#include "opspace/model/model.hpp"
 
 namespace fuzz {
 

@@ -11,7 +11,7 @@
 #include <problems/2/run/scenario.hpp>
 #include <problems/4/run/scenario.hpp>
 #include "opspace/model/urdf.hpp"
-#include "problems/2/problem_set.hpp"
+#include <problems/2/problem_set.hpp>
 #include "grader/suite/random.hpp"
 
 using namespace opspace;

@@ -3,7 +3,7 @@
 // (problems/1b/run/lab.cpp, offset.cpp). The only file of test_live that counts allocations.
 #include <doctest/doctest.h>
 
-#include "problems/1b/contract.hpp"
+#include <problems/1b/contract.hpp>
 #include <problems/1b/run/lab.hpp>
 #include "opspace/live/push.hpp"
 #include "support/count_allocations.hpp"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/1b/contract.hpp"
+#include <problems/1b/contract.hpp>
 #include <problems/1b/run/lab.hpp>
 #include "opspace/live/run.hpp"
 #include "opspace/live/session.hpp"

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "problems/1b/contract.hpp"
-#include "problems/2/contract.hpp"
-#include "problems/3/contract.hpp"
-#include "problems/4/contract.hpp"
+#include <problems/1b/contract.hpp>
+#include <problems/2/contract.hpp>
+#include <problems/3/contract.hpp>
+#include <problems/4/contract.hpp>
 #include <problems/1b/run/lab.hpp>
 #include <problems/2/run/lab.hpp>
 #include <problems/3/run/lab.hpp>

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "problems/1b/contract.hpp"
-#include "problems/2/contract.hpp"
-#include "problems/3/contract.hpp"
-#include "problems/4/contract.hpp"
+#include <problems/1b/contract.hpp>
+#include <problems/2/contract.hpp>
+#include <problems/3/contract.hpp>
+#include <problems/4/contract.hpp>
 #include "opspace/algorithms/dynamics.hpp"
 #include "opspace/algorithms/kinematics.hpp"
 #include <problems/1b/run/lab.hpp>

@@ -13,7 +13,7 @@
 #include <string>
 #include <thread>
 
-#include "problems/1b/contract.hpp"
+#include <problems/1b/contract.hpp>
 #include <problems/1b/run/lab.hpp>
 #include "opspace/live/run.hpp"
 #include "opspace/scenarios/watchdog.hpp"

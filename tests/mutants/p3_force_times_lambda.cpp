@@ -3,7 +3,7 @@
 // Omega-bar F_d sent through Lambda0 like an acceleration. Graded as a submission by
 // check_mutant_page.sh: the report page plots its force error far above the 1 N bound while
 // the reference's stays under it (problems/3/guide.md's picture).
-#include <opspace/algorithms/euler_params.hpp>
+#include "opspace/algorithms/euler_params.hpp"
 #include <problems/3/contract.hpp>
 
 namespace opspace::hw2::p3 {

@@ -20,7 +20,7 @@
 #include "judge/mistakes.hpp"
 #include "build/library_answers.hpp"
 #include "judge/oracles.hpp"
-#include "problems/2/tests.hpp"
+#include <problems/2/tests.hpp>
 #include "report/report.hpp"
 #include "judge/graded_suite.hpp"
 #include "law_pin.hpp"

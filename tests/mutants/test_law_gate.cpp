@@ -18,7 +18,7 @@
 #include "law_pin.hpp"
 #include "linked_api.hpp"
 #include "judge/oracles.hpp"
-#include "problems/1b/tests.hpp"
+#include <problems/1b/tests.hpp>
 
 namespace grading = opspace::grading;
 namespace hw2 = opspace::hw2;

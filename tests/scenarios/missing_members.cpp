@@ -1,7 +1,7 @@
 // A Scenario that lacks what the one loop needs (scenarios/loop.hpp): a Goal without kvj, which
 // the live lab's gains set, and a Summary without clamped_steps, which the loop fills. It must not
 // compile, and the first errors must name the missing members (check_missing_members.sh).
-#include <opspace/scenarios/loop.hpp>
+#include "opspace/scenarios/loop.hpp"
 
 struct Goal {
   double kpx = 0.0, kvx = 0.0;  // no kvj

@@ -1,4 +1,4 @@
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +8,10 @@
 #include <sstream>
 #include <filesystem>
 
-#include <opspace/scenarios/watchdog.hpp>
-#include <opspace/visuals/visuals.hpp>
+#include "opspace/scenarios/watchdog.hpp"
+#include "opspace/visuals/visuals.hpp"
 
-namespace cli {
+namespace opspace::programs {
 
 int refuse(const char* program, const std::string& message) {
   std::cerr << program << ": " << message << "\n";
@@ -191,4 +191,4 @@ int guarded(const char* program, const std::function<int()>& body) {
   }
 }
 
-}  // namespace cli
+}  // namespace opspace::programs

@@ -1,13 +1,13 @@
-#include <opspace/programs/reference_text.hpp>
+#include "opspace/programs/reference_text.hpp"
 
 #include <iomanip>
 #include <ios>
 #include <ostream>
 #include <sstream>
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
 
-namespace cli {
+namespace opspace::programs {
 
 std::string exact(double v) {
   std::ostringstream hex;
@@ -40,4 +40,4 @@ std::string torque(double peak, int joint_index, long clamped, Show number) {
   return s + (clamped ? ", " + number(static_cast<double>(clamped), kJointSteps) + " clamped" : ", none clamped");
 }
 
-}  // namespace cli
+}  // namespace opspace::programs

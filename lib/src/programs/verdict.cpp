@@ -1,4 +1,4 @@
-#include <opspace/programs/verdict.hpp>
+#include "opspace/programs/verdict.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-namespace cli {
+namespace opspace::programs {
 
 std::string show(double value, const Unit& unit) {
   const double x = value * unit.scale;
@@ -110,4 +110,4 @@ void Verdict::print(std::ostream& out, const std::string& grade_hint) const {
   }
 }
 
-}  // namespace cli
+}  // namespace opspace::programs

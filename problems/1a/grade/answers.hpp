@@ -6,8 +6,8 @@
 /// handout nor the Gradescope image keeps this file.
 #pragma once
 
-#include <opspace/algorithms/linalg.hpp>
-#include <opspace/algorithms/pp_robot.hpp>
+#include "opspace/algorithms/linalg.hpp"
+#include "opspace/algorithms/pp_robot.hpp"
 
 #include "run/api.hpp"
 

@@ -4,11 +4,11 @@
 // at random Jacobians and weights, or the closed form of a 2x2 projector written out below.
 // Every test that takes inputs asks the problem set's inputs as one case among random ones, so
 // that an answer hard-coded for m1 = 10, m2 = 5 or J = [1 1] cannot pass.
-#include <opspace/algorithms/linalg.hpp>
-#include <opspace/algorithms/pp_robot.hpp>
+#include "opspace/algorithms/linalg.hpp"
+#include "opspace/algorithms/pp_robot.hpp"
 
 #include "judge/graded_suite.hpp"
-#include "problems/1a/tests.hpp"
+#include <problems/1a/tests.hpp>
 #include "grader/suite/random.hpp"
 
 namespace opspace::grading {

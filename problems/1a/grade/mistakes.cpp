@@ -1,6 +1,6 @@
 // Known mistakes of problem 1a. Each replaces one function by a wrong formula.
 #include "judge/mistakes.hpp"
-#include "problems/1a/tests.hpp"
+#include <problems/1a/tests.hpp>
 
 namespace opspace::grading {
 

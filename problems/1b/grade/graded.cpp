@@ -4,9 +4,9 @@
 // - the behaviour: the closed loop on the Bullet simulation, with bounds whose reasons are
 //   given beside them, measured only on the problem set's law: every tick of the run is
 //   compared with the law's oracle at the same State (law_pin.hpp).
-#include <opspace/algorithms/linalg.hpp>
+#include "opspace/algorithms/linalg.hpp"
 #include <problems/1b/run/scenario.hpp>
-#include <opspace/model/urdf.hpp>
+#include "opspace/model/urdf.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -17,7 +17,7 @@
 #include "judge/oracles.hpp"
 #include "run_figure.hpp"
 #include "judge/graded_suite.hpp"
-#include "problems/1b/tests.hpp"
+#include <problems/1b/tests.hpp>
 #include "grader/suite/random.hpp"
 #include "simulated_runs.hpp"
 

@@ -3,7 +3,7 @@
 // the law at every tick of its runs (law_pin.hpp), so a mistake in a part's law costs each
 // simulated test that runs that part, whatever the run's behaviour.
 #include "judge/mistakes.hpp"
-#include "problems/1b/tests.hpp"
+#include <problems/1b/tests.hpp>
 
 namespace opspace::grading {
 

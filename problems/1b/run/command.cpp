@@ -3,7 +3,7 @@
 #include <iostream>
 #include <string>
 
-namespace cli {
+namespace opspace::programs {
 
 int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& command) {
   using opspace::hw2::p1b::Part;
@@ -51,4 +51,4 @@ int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& c
   return -1;
 }
 
-}  // namespace cli
+}  // namespace opspace::programs

@@ -1,12 +1,12 @@
-// hw2-p1's command line (problem 1b's program): PART first, then cli::parse()'s options.
+// hw2-p1's command line (problem 1b's program): PART first, then programs::parse()'s options.
 // tests/apps/test_cli.cpp checks it and tests/fuzz/fuzz_cli.cpp fuzzes it.
 #pragma once
 
 #include <problems/1b/contract.hpp>
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
 
-namespace cli {
+namespace opspace::programs {
 
 /// hw2-p1's command line: PART first (1, 2, 3 or compare; --help and -h only there), then
 /// --no-joint-damping (PART 1 only) and parse()'s options but --help.
@@ -19,4 +19,4 @@ struct P1Command {
 /// Parses hw2-p1's argv into `command` (usage: the program's); returns as parse() does.
 int parse_p1(int argc, char** argv, int (*usage)(const char*, int), P1Command& command);
 
-}  // namespace cli
+}  // namespace opspace::programs

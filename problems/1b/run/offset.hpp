@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "problems/1b/contract.hpp"
+#include <problems/1b/contract.hpp>
 
 namespace opspace::live {
 

@@ -9,17 +9,19 @@
 
 #include <problems/1b/contract.hpp>
 #include <problems/1b/run/scenario.hpp>
-#include <opspace/scenarios/common.hpp>
+#include "opspace/scenarios/common.hpp"
 #include <problems/1b/run/pictures.hpp>
-#include <opspace/visuals/visuals.hpp>
+#include "opspace/visuals/visuals.hpp"
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
 #include "command.hpp"
-#include <opspace/programs/program.hpp>
+#include "opspace/programs/program.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
 #include <problems/1b/run/lab.hpp>
+
+namespace programs = opspace::programs;
 #endif
 
 namespace {
@@ -35,10 +37,10 @@ int usage(const char* program, int code) {
       << "     (--no-joint-damping: question ii's variant without it)\n"
       << "  2  PART2: move joint 2 in the null space, pseudo-inverse projector\n"
       << "  3  PART3: move joint 2 in the null space, dynamically consistent projector\n"
-      << "  compare  run PART2 and PART3 and overlay their tip drift (out/" << cli::program_name(program) << "-compare-drift.png)\n"
+      << "  compare  run PART2 and PART3 and overlay their tip drift (out/" << programs::program_name(program) << "-compare-drift.png)\n"
       << "  --duration  simulated seconds (default " << p1b::kDefaultDuration << ", as the grader; at most "
-      << cli::kMaxDuration << ")\n"
-      << "  --csv       log file (default out/" << cli::program_name(program) << "-part<PART>.csv in the repository); the plots and the replay page\n"
+      << programs::kMaxDuration << ")\n"
+      << "  --csv       log file (default out/" << programs::program_name(program) << "-part<PART>.csv in the repository); the plots and the replay page\n"
       << "              are written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n"
       << "  --live      run in real time in the browser: push the arm, switch PART (docs/live.md); until\n"
@@ -53,56 +55,56 @@ int usage(const char* program, int code) {
 void print_summary(Part part, const p1b::Result& r, double duration, const std::string& csv) {
   const p1b::Summary& s = r.summary;
   const p1b::Summary ref = reference::p1b(part);
-  cli::print_summary_start(s.time_reached, duration, reference::kP1bDuration);
-  cli::Verdict table(cli::reference_heading(reference::kP1bDuration));
-  table.section("after " + cli::show(p1b::kSettleTime, cli::kSeconds));
+  programs::print_summary_start(s.time_reached, duration, reference::kP1bDuration);
+  programs::Verdict table(programs::reference_heading(reference::kP1bDuration));
+  table.section("after " + programs::show(p1b::kSettleTime, programs::kSeconds));
   switch (part) {
     case Part::kTipPd:
-      table.at_most("tip error, RMS", s.tip_error_rms, p1b::kPart1TipErrorRmsMax, ref.tip_error_rms, cli::kMm);
-      table.shown("tip error, max", s.tip_error_max, ref.tip_error_max, cli::kMm);
+      table.at_most("tip error, RMS", s.tip_error_rms, p1b::kPart1TipErrorRmsMax, ref.tip_error_rms, programs::kMm);
+      table.shown("tip error, max", s.tip_error_max, ref.tip_error_max, programs::kMm);
       break;
     case Part::kTipPdWithoutJointDamping:
-      table.shown("tip error, RMS", s.tip_error_rms, ref.tip_error_rms, cli::kMm);
-      table.shown("tip error, max", s.tip_error_max, ref.tip_error_max, cli::kMm);
+      table.shown("tip error, RMS", s.tip_error_rms, ref.tip_error_rms, programs::kMm);
+      table.shown("tip error, max", s.tip_error_max, ref.tip_error_max, programs::kMm);
       table.note("question ii's variant: the grader checks its law only. Without joint damping the arm");
       table.note("swings in the null space, and its Coriolis forces move the tip by centimetres.");
       break;
     case Part::kPseudoInverseNullspace:
-      table.row("tip error, RMS", cli::show(s.tip_error_rms, cli::kMm),
-                ">= " + cli::show_bound(p1b::kPart2OverPart3TipErrorRmsMin, cli::kNone) + " x PART3's",
-                cli::show(ref.tip_error_rms, cli::kMm));
+      table.row("tip error, RMS", programs::show(s.tip_error_rms, programs::kMm),
+                ">= " + programs::show_bound(p1b::kPart2OverPart3TipErrorRmsMin, programs::kNone) + " x PART3's",
+                programs::show(ref.tip_error_rms, programs::kMm));
       table.note("the pseudo-inverse projector lets the joint task push the tip: the point of PART2.");
       table.note("`hw2-p1 compare` runs PART2 and PART3 and checks the ratio. PART2 is chaotic: round-off");
       table.note("alone moves its numbers by tens of percent, so a correct law need not match the reference.");
-      table.shown("tip error, max", s.tip_error_max, ref.tip_error_max, cli::kMm);
-      table.at_most("q2 tracking error, max", s.q2_error_max, p1b::kPart2Q2ErrorMax, ref.q2_error_max, cli::kRad);
-      table.shown("q2 tracking error, RMS", s.q2_error_rms, ref.q2_error_rms, cli::kRad);
+      table.shown("tip error, max", s.tip_error_max, ref.tip_error_max, programs::kMm);
+      table.at_most("q2 tracking error, max", s.q2_error_max, p1b::kPart2Q2ErrorMax, ref.q2_error_max, programs::kRad);
+      table.shown("q2 tracking error, RMS", s.q2_error_rms, ref.q2_error_rms, programs::kRad);
       break;
     case Part::kDynamicallyConsistentNullspace:
-      table.at_most("tip error, max", s.tip_error_max, p1b::kPart3TipErrorMax, ref.tip_error_max, cli::kMm);
-      table.shown("tip error, RMS", s.tip_error_rms, ref.tip_error_rms, cli::kMm);
-      table.at_most("q2 tracking error, max", s.q2_error_max, p1b::kPart3Q2ErrorMax, ref.q2_error_max, cli::kRad);
-      table.shown("q2 tracking error, RMS", s.q2_error_rms, ref.q2_error_rms, cli::kRad);
+      table.at_most("tip error, max", s.tip_error_max, p1b::kPart3TipErrorMax, ref.tip_error_max, programs::kMm);
+      table.shown("tip error, RMS", s.tip_error_rms, ref.tip_error_rms, programs::kMm);
+      table.at_most("q2 tracking error, max", s.q2_error_max, p1b::kPart3Q2ErrorMax, ref.q2_error_max, programs::kRad);
+      table.shown("q2 tracking error, RMS", s.q2_error_rms, ref.q2_error_rms, programs::kRad);
       break;
   }
   table.section("over the whole run");
-  cli::add_torque_rows(table, s, ref);
+  programs::add_torque_rows(table, s, ref);
   table.print(std::cout, "bash scripts/grade --problem 1b says which test and why");
-  cli::print_summary_end(r, csv);
+  programs::print_summary_end(r, csv);
 }
 
 /// With --test: the final values of the series the graded tests read of `part`'s run, named as
 /// the report's figures name them (problems/1b/grade/graded.cpp).
-void print_finals(const cli::Options& options, Part part, const p1b::Result& r) {
+void print_finals(const programs::Options& options, Part part, const p1b::Result& r) {
   if (r.samples.empty()) return;
   const std::string name = part == Part::kTipPd ? "PART1" : part == Part::kPseudoInverseNullspace ? "PART2" : "PART3";
-  cli::print_final(options, name + " tip error |x - x_d|", p1b::tip_error(r.samples.back()), "m");
+  programs::print_final(options, name + " tip error |x - x_d|", p1b::tip_error(r.samples.back()), "m");
   if (part != Part::kTipPd && part != Part::kTipPdWithoutJointDamping)
-    cli::print_final(options, name + " joint 2 tracking error |q2 - q2_d|", p1b::q2_error(r.samples.back()), "rad");
+    programs::print_final(options, name + " joint 2 tracking error |q2 - q2_d|", p1b::q2_error(r.samples.back()), "rad");
 }
 
 /// Runs PART2 and PART3 and draws their tip drift in one figure: the lesson of problem 1b.
-int compare(const cli::Options& cli_options, const std::string& prefix) {
+int compare(const programs::Options& cli_options, const std::string& prefix) {
   std::cout << "problem 1b, PART2 against PART3 (" << OPSPACE_GRADED_LIBRARY << ")\n";
   opspace::scenarios::RunOptions options = cli_options.run;
   options.csv_path = prefix + "-part2.csv";
@@ -116,15 +118,15 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
   const auto ratio = [](const p1b::Summary& a, const p1b::Summary& b) {
     return a.tip_error_rms / std::max(b.tip_error_rms, 1e-9);  // as the grader divides
   };
-  cli::print_summary_start(std::min(s2.time_reached, s3.time_reached), options.duration, reference::kP1bDuration);
-  cli::Verdict table(cli::reference_heading(reference::kP1bDuration));
-  table.section("tip error after " + cli::show(p1b::kSettleTime, cli::kSeconds));
-  table.shown("PART2 pseudo-inverse, RMS", s2.tip_error_rms, ref2.tip_error_rms, cli::kMm);
-  table.shown("PART2 pseudo-inverse, max", s2.tip_error_max, ref2.tip_error_max, cli::kMm);
-  table.shown("PART3 dyn. consistent, RMS", s3.tip_error_rms, ref3.tip_error_rms, cli::kMm);
-  table.at_most("PART3 dyn. consistent, max", s3.tip_error_max, p1b::kPart3TipErrorMax, ref3.tip_error_max, cli::kMm);
+  programs::print_summary_start(std::min(s2.time_reached, s3.time_reached), options.duration, reference::kP1bDuration);
+  programs::Verdict table(programs::reference_heading(reference::kP1bDuration));
+  table.section("tip error after " + programs::show(p1b::kSettleTime, programs::kSeconds));
+  table.shown("PART2 pseudo-inverse, RMS", s2.tip_error_rms, ref2.tip_error_rms, programs::kMm);
+  table.shown("PART2 pseudo-inverse, max", s2.tip_error_max, ref2.tip_error_max, programs::kMm);
+  table.shown("PART3 dyn. consistent, RMS", s3.tip_error_rms, ref3.tip_error_rms, programs::kMm);
+  table.at_most("PART3 dyn. consistent, max", s3.tip_error_max, p1b::kPart3TipErrorMax, ref3.tip_error_max, programs::kMm);
   table.at_least("RMS of PART2 over PART3's", ratio(s2, s3), p1b::kPart2OverPart3TipErrorRmsMin, ratio(ref2, ref3),
-                 cli::kNone);
+                 programs::kNone);
   table.note("PART2 is chaotic: round-off alone moves its numbers by tens of percent.");
   table.print(std::cout, "bash scripts/grade --problem 1b says which test and why");
   std::cout << "logs: " << prefix << "-part2.csv " << prefix << "-part3.csv\n";
@@ -136,9 +138,9 @@ int compare(const cli::Options& cli_options, const std::string& prefix) {
   return part2.failure.empty() && part3.failure.empty() ? 0 : 1;
 }
 
-/// hw2-p1 for `part` (but compare), described once: cli::run_parsed() is the rest of its main.
-cli::ScenarioProgram<p1b::Scenario> program(Part part) {
-  cli::ScenarioProgram<p1b::Scenario> program;
+/// hw2-p1 for `part` (but compare), described once: programs::run_parsed() is the rest of its main.
+programs::ScenarioProgram<p1b::Scenario> program(Part part) {
+  programs::ScenarioProgram<p1b::Scenario> program;
   program.name = "hw2-p1";
   program.problem = "1b";
   program.heading = "problem 1b, " + p1b::describe(part) + " (" + OPSPACE_GRADED_LIBRARY + ")";
@@ -149,7 +151,7 @@ cli::ScenarioProgram<p1b::Scenario> program(Part part) {
   program.summary = [part](const p1b::Result& r, double duration, const std::string& csv) {
     print_summary(part, r, duration, csv);
   };
-  program.finals = [part](const cli::Options& options, const p1b::Result& r) { print_finals(options, part, r); };
+  program.finals = [part](const programs::Options& options, const p1b::Result& r) { print_finals(options, part, r); };
   program.figures = [](const p1b::Result& r, const p1b::Scenario& s) { return p1b::figures(r, s.part); };
   program.replay_scene = [](const p1b::Result& r, const p1b::Scenario& s) { return p1b::replay_scene(r, s.part); };
 #ifdef OPSPACE_LIVE
@@ -166,16 +168,16 @@ cli::ScenarioProgram<p1b::Scenario> program(Part part) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  cli::P1Command command;
+  programs::P1Command command;
   command.options.run.duration = p1b::kDefaultDuration;
-  const int code = cli::parse_p1(argc, argv, &usage, command);
+  const int code = programs::parse_p1(argc, argv, &usage, command);
   if (code >= 0) return code;
-  if (!command.comparing) return cli::run_parsed(argv[0], command.options, program(command.part));
-  cli::Options& options = command.options;
-  if (!cli::watchdog_from_environment(argv[0], options)) return 2;
-  cli::start_replay(options, "1b", p1b::Scenario::kGradedDuration);
+  if (!command.comparing) return programs::run_parsed(argv[0], command.options, program(command.part));
+  programs::Options& options = command.options;
+  if (!programs::watchdog_from_environment(argv[0], options)) return 2;
+  programs::start_replay(options, "1b", p1b::Scenario::kGradedDuration);
   options.run.progress = &std::cerr;
   options.run.label = "hw2-p1";
   const std::string prefix = opspace::visuals::prefix_of(options.run.csv_path);
-  return cli::guarded(argv[0], [&] { return compare(options, prefix); });
+  return programs::guarded(argv[0], [&] { return compare(options, prefix); });
 }

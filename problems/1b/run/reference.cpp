@@ -10,8 +10,10 @@
 #include <vector>
 
 #include <problems/1b/contract.hpp>
-#include <opspace/programs/reference_text.hpp>
+#include "opspace/programs/reference_text.hpp"
 #include <problems/1b/run/scenario.hpp>
+
+namespace programs = opspace::programs;
 
 namespace {
 
@@ -34,12 +36,12 @@ Runs run_parts() {
 }
 
 #define OPSPACE_MEMBER(s, m) set(#m, s.m)
-void members(cli::Assignments& set, const p1b::Summary& s) {
+void members(programs::Assignments& set, const p1b::Summary& s) {
   OPSPACE_MEMBER(s, tip_error_max);
   OPSPACE_MEMBER(s, tip_error_rms);
   OPSPACE_MEMBER(s, q2_error_max);
   OPSPACE_MEMBER(s, q2_error_rms);
-  cli::run_totals(set, s);
+  programs::run_totals(set, s);
 }
 #undef OPSPACE_MEMBER
 
@@ -82,7 +84,7 @@ std::string declarations(const Runs& runs) {
   std::vector<std::pair<std::string, p1b::Summary>> parts;
   for (const auto& [part, r] : runs) parts.emplace_back(part_condition(part), r.summary);
   out << "/// solutions/' run of `part`.\n";
-  cli::summary_function(out, "p1b(opspace::hw2::p1b::Part part)", "opspace::scenarios::p1b::Summary", parts, &members);
+  programs::summary_function(out, "p1b(opspace::hw2::p1b::Part part)", "opspace::scenarios::p1b::Summary", parts, &members);
   tip_paths(out, runs);
   return out.str();
 }
@@ -104,28 +106,28 @@ std::pair<double, int> largest_speed(const p1b::Result& r) {
 }
 
 std::string fragment(const Runs& runs) {
-  using cli::show;
+  using programs::show;
   const p1b::Result& part1 = runs.at(Part::kTipPd);
   const Eigen::Vector3d x_d = p1b::goal(0.0, p1b::initial_q()).x_d;
   std::ostringstream out;
-  out << "Measured with `hw2-p1-sol` over " << show(p1b::kDefaultDuration, cli::kSeconds)
-      << ", the default run and the graded one (errors after the first " << show(p1b::kSettleTime, cli::kSeconds)
-      << "; the tip starts " << show((part1.samples.front().x - x_d).norm(), cli::kMm) << " from x_d):\n\n"
+  out << "Measured with `hw2-p1-sol` over " << show(p1b::kDefaultDuration, programs::kSeconds)
+      << ", the default run and the graded one (errors after the first " << show(p1b::kSettleTime, programs::kSeconds)
+      << "; the tip starts " << show((part1.samples.front().x - x_d).norm(), programs::kMm) << " from x_d):\n\n"
       << "| run | tip error | q2 tracking error | peak torque |\n|---|---|---|---|\n";
   for (Part part : kParts) {
     const p1b::Summary& s = runs.at(part).summary;
     // PART2 is chaotic: 1e-15 rad more on joint 6's start moves its max tip error by 5 % and
     // its clamped steps by 20 % (measured); the other parts do not change in 4 digits.
-    const cli::Show number = part == Part::kPseudoInverseNullspace ? &cli::approx : &cli::show;
+    const programs::Show number = part == Part::kPseudoInverseNullspace ? &programs::approx : &programs::show;
     const bool joint_task = part == Part::kPseudoInverseNullspace || part == Part::kDynamicallyConsistentNullspace;
     const std::string name = part == Part::kTipPdWithoutJointDamping ? "PART1 without joint damping"
                                                                      : p1b::describe(part).substr(0, 5);
-    out << "| " << name << " | " << cli::max_rms(s.tip_error_max, s.tip_error_rms, cli::kMm, number) << " | "
-        << (joint_task ? "max " + number(s.q2_error_max, cli::kRad) : "(no joint task)") << " | "
-        << cli::torque(s.peak_torque, s.peak_torque_joint, s.clamped_steps, number) << " |\n";
+    out << "| " << name << " | " << programs::max_rms(s.tip_error_max, s.tip_error_rms, programs::kMm, number) << " | "
+        << (joint_task ? "max " + number(s.q2_error_max, programs::kRad) : "(no joint task)") << " | "
+        << programs::torque(s.peak_torque, s.peak_torque_joint, s.clamped_steps, number) << " |\n";
   }
   const auto [speed, joint] = largest_speed(runs.at(Part::kPseudoInverseNullspace));
-  out << "\nPART2's fastest joint, joint " << joint + 1 << ", reaches " << cli::approx(speed, {"rad/s", 1.0})
+  out << "\nPART2's fastest joint, joint " << joint + 1 << ", reaches " << programs::approx(speed, {"rad/s", 1.0})
       << " (1 ms differences of q).\n"
          "PART2 is chaotic: \"~\" marks values that round-off changes by percents (the last bit of\n"
          "one starting angle moves its tip error by 5 %).\n";
@@ -134,7 +136,7 @@ std::string fragment(const Runs& runs) {
 
 }  // namespace
 
-cli::ReferenceText reference_run_1b() {
+programs::ReferenceText reference_run_1b() {
   const Runs runs = run_parts();
   return {{"problems/1b/contract.hpp", "problems/1b/run/scenario.hpp"}, declarations(runs), {{"p1b-reference", fragment(runs)}}};
 }

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/1b/contract.hpp"
+#include <problems/1b/contract.hpp>
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/model/catalogue.hpp"
 #include "opspace/model/model.hpp"

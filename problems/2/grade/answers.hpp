@@ -6,10 +6,10 @@
 /// Gradescope image keeps this file.
 #pragma once
 
-#include <opspace/algorithms/euler_params.hpp>
+#include "opspace/algorithms/euler_params.hpp"
 
 #include "run/api.hpp"
-#include "problems/2/problem_set.hpp"
+#include <problems/2/problem_set.hpp>
 
 namespace opspace::grading::oracle {
 

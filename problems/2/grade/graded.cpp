@@ -6,10 +6,10 @@
 // - the behaviour: the closed loop on the Bullet simulation, with bounds whose reasons are
 //   given beside them, measured only on the problem set's law: every tick of the run is
 //   compared with the law's oracle at the same State and Goal (law_pin.hpp).
-#include <opspace/math/constants.hpp>
-#include <opspace/algorithms/euler_params.hpp>
+#include "opspace/math/constants.hpp"
+#include "opspace/algorithms/euler_params.hpp"
 #include <problems/2/run/scenario.hpp>
-#include <opspace/model/urdf.hpp>
+#include "opspace/model/urdf.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +21,8 @@
 #include "judge/oracles.hpp"
 #include "run_figure.hpp"
 #include "judge/graded_suite.hpp"
-#include "problems/2/tests.hpp"
-#include "problems/2/problem_set.hpp"
+#include <problems/2/tests.hpp>
+#include <problems/2/problem_set.hpp>
 #include "grader/suite/random.hpp"
 
 namespace opspace::grading {

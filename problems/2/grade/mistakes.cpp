@@ -4,14 +4,14 @@
 // behaviour test whose judged statistic it moves, and a slip that moves nothing a test judges
 // costs the law test alone. The comments say what the run shows; its rubric (guide.md) lists
 // the points each costs.
-#include <opspace/algorithms/euler_params.hpp>
+#include "opspace/algorithms/euler_params.hpp"
 #include <problems/2/contract.hpp>
-#include <opspace/math/constants.hpp>
+#include "opspace/math/constants.hpp"
 
 #include <cmath>
 
 #include "judge/mistakes.hpp"
-#include "problems/2/tests.hpp"
+#include <problems/2/tests.hpp>
 
 namespace opspace::grading {
 

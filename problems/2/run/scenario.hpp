@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/2/contract.hpp"
+#include <problems/2/contract.hpp>
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/math/constants.hpp"
 #include "opspace/model/catalogue.hpp"

@@ -5,10 +5,10 @@
 // - the behaviour: the closed loop on the Bullet simulation with the plane x = 0.05, with
 //   bounds whose reasons are given beside them, measured only on the problem set's law: every
 //   tick of the run is compared with the law's oracle at the same State and Goal (law_pin.hpp).
-#include <opspace/math/constants.hpp>
-#include <opspace/algorithms/euler_params.hpp>
+#include "opspace/math/constants.hpp"
+#include "opspace/algorithms/euler_params.hpp"
 #include <problems/3/run/scenario.hpp>
-#include <opspace/model/urdf.hpp>
+#include "opspace/model/urdf.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -20,7 +20,7 @@
 #include "judge/oracles.hpp"
 #include "run_figure.hpp"
 #include "judge/graded_suite.hpp"
-#include "problems/3/tests.hpp"
+#include <problems/3/tests.hpp>
 #include "grader/suite/random.hpp"
 
 namespace opspace::grading {

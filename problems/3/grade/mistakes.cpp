@@ -4,11 +4,11 @@
 // force directions, p3::kProbeAmplitude and p3::kProbeTilt, make each different law move one);
 // one that leaves the run's torque the law's (F_d without Omega-bar, with the run's F_d along x)
 // costs the law test alone. Its rubric (guide.md) lists the points each costs.
-#include <opspace/algorithms/euler_params.hpp>
+#include "opspace/algorithms/euler_params.hpp"
 #include <problems/3/contract.hpp>
 
 #include "judge/mistakes.hpp"
-#include "problems/3/tests.hpp"
+#include <problems/3/tests.hpp>
 #include "answers.hpp"
 #include "judge/oracles.hpp"
 

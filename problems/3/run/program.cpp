@@ -9,14 +9,16 @@
 #include <problems/3/contract.hpp>
 #include <problems/3/run/scenario.hpp>
 #include <problems/3/run/pictures.hpp>
-#include <opspace/visuals/visuals.hpp>
+#include "opspace/visuals/visuals.hpp"
 
-#include <opspace/programs/cli.hpp>
-#include <opspace/programs/program.hpp>
+#include "opspace/programs/cli.hpp"
+#include "opspace/programs/program.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
 #include <problems/3/run/lab.hpp>
+
+namespace programs = opspace::programs;
 #endif
 
 namespace {
@@ -28,8 +30,8 @@ int usage(const char* program, int code) {
       << "usage: " << program << " [--duration SECONDS] [--csv PATH] [--no-plots] [--no-replay] [--live [--port N]]\n"
       << "       [--test NAME [--seed N]]   replay a graded test's run, as the grader's report prints it\n"
       << "  link7's tool pushes 10 N on the plane x = 0.05 and tracks y_d, z_d and the rotation about x\n"
-      << "  --duration  simulated seconds (default " << p3::kDefaultDuration << ", at most " << cli::kMaxDuration << ")\n"
-      << "  --csv       log file (default out/" << cli::program_name(program) << ".csv in the repository); the plots (PNG, SVG) and the replay page\n"
+      << "  --duration  simulated seconds (default " << p3::kDefaultDuration << ", at most " << programs::kMaxDuration << ")\n"
+      << "  --csv       log file (default out/" << programs::program_name(program) << ".csv in the repository); the plots (PNG, SVG) and the replay page\n"
       << "              (HTML) are written next to it, named after it (docs/visuals.md)\n"
       << "  --no-plots, --no-replay   skip the PNG/SVG plots, the 3D replay page\n"
       << "  --live      run in real time in the browser, push the arm with the mouse (docs/live.md); until\n"
@@ -55,48 +57,48 @@ std::string x_range(const p3::Summary& s) {
 void print_summary(const p3::Result& r, double duration, const std::string& csv) {
   const p3::Summary& s = r.summary;
   const p3::Summary ref = reference::p3();
-  cli::print_summary_start(s.time_reached, duration, reference::kP3Duration);
-  cli::Verdict table(cli::reference_heading(reference::kP3Duration));
+  programs::print_summary_start(s.time_reached, duration, reference::kP3Duration);
+  programs::Verdict table(programs::reference_heading(reference::kP3Duration));
   table.section("contact");
   table.row("first push on the plane", contact_time(s), "graded: must touch", contact_time(ref),
             s.first_contact_time >= 0 ? "ok" : "MISSES");
-  table.section("after " + cli::show(p3::kSettleTime, cli::kSeconds));
+  table.section("after " + programs::show(p3::kSettleTime, programs::kSeconds));
   table.at_most("mean |F_x - 10 N|", s.force_error_mean, p3::kForceErrorMeanMax, ref.force_error_mean,
-                cli::kNewton);
-  table.shown("mean F_x", s.force_mean, ref.force_mean, cli::kNewton);
-  table.shown("peak |F_x - 10 N|, one step", s.force_error_max, ref.force_error_max, cli::kNewton);
-  table.shown("peak |F_x - 10 N|, 10 ms mean", s.force_error_max_10ms, ref.force_error_max_10ms, cli::kNewton);
+                programs::kNewton);
+  table.shown("mean F_x", s.force_mean, ref.force_mean, programs::kNewton);
+  table.shown("peak |F_x - 10 N|, one step", s.force_error_max, ref.force_error_max, programs::kNewton);
+  table.shown("peak |F_x - 10 N|, 10 ms mean", s.force_error_max_10ms, ref.force_error_max_10ms, programs::kNewton);
   table.note("single steps scatter: the solver shares the push unevenly among the disc's contact points");
   table.at_most("steps without contact", static_cast<double>(s.contact_lost_samples),
                 static_cast<double>(p3::kContactLostSamplesMax), static_cast<double>(ref.contact_lost_samples),
-                cli::kSteps);
-  table.shown("moment |(M_y, M_z)|, max", s.moment_yz_max, ref.moment_yz_max, cli::kNewtonMetre);
-  table.at_most("y, z tracking error, RMS", s.yz_error_rms, p3::kYzErrorRmsMax, ref.yz_error_rms, cli::kMm);
-  table.shown("y, z tracking error, max", s.yz_error_max, ref.yz_error_max, cli::kMm);
+                programs::kSteps);
+  table.shown("moment |(M_y, M_z)|, max", s.moment_yz_max, ref.moment_yz_max, programs::kNewtonMetre);
+  table.at_most("y, z tracking error, RMS", s.yz_error_rms, p3::kYzErrorRmsMax, ref.yz_error_rms, programs::kMm);
+  table.shown("y, z tracking error, max", s.yz_error_max, ref.yz_error_max, programs::kMm);
   table.at_most("rotation-about-x error, RMS", s.rotation_x_error_rms, p3::kRotationXErrorRmsMax,
-                ref.rotation_x_error_rms, cli::kDegrees);
-  table.shown("rotation-about-x error, max", s.rotation_x_error_max, ref.rotation_x_error_max, cli::kDegrees);
-  table.at_most("tool tilt, max", s.tilt_max, p3::kTiltMax, ref.tilt_max, cli::kDegrees);
-  table.shown("tool tilt, RMS", s.tilt_rms, ref.tilt_rms, cli::kDegrees);
+                ref.rotation_x_error_rms, programs::kDegrees);
+  table.shown("rotation-about-x error, max", s.rotation_x_error_max, ref.rotation_x_error_max, programs::kDegrees);
+  table.at_most("tool tilt, max", s.tilt_max, p3::kTiltMax, ref.tilt_max, programs::kDegrees);
+  table.shown("tool tilt, RMS", s.tilt_rms, ref.tilt_rms, programs::kDegrees);
   table.row("link7's origin along x", x_range(s), "not graded", x_range(ref));
   table.note("0 puts the tool face on the plane x = 0.05");
   table.section("over the whole run");
-  cli::add_torque_rows(table, s, ref);
+  programs::add_torque_rows(table, s, ref);
   table.print(std::cout, "bash scripts/grade --problem 3 says which test and why");
-  cli::print_summary_end(r, csv);
+  programs::print_summary_end(r, csv);
 }
 
 /// With --test: the values the report's figures end with (problems/3/grade/graded.cpp).
-void print_finals(const cli::Options& options, const p3::Result& r) {
+void print_finals(const programs::Options& options, const p3::Result& r) {
   const p3::Sample& last = r.samples.back();
-  cli::print_final(options, "force error |F_x - 10 N|", p3::force_error(last), "N");
-  cli::print_final(options, "|(y - y_d, z - z_d)|", p3::yz_error(last), "m");
-  cli::print_final(options, "rotation-about-x error", p3::rotation_x_error(last), "rad");
+  programs::print_final(options, "force error |F_x - 10 N|", p3::force_error(last), "N");
+  programs::print_final(options, "|(y - y_d, z - z_d)|", p3::yz_error(last), "m");
+  programs::print_final(options, "rotation-about-x error", p3::rotation_x_error(last), "rad");
 }
 
-/// hw2-p3, described once: cli::run_program() is its main.
-cli::ScenarioProgram<p3::Scenario> program() {
-  cli::ScenarioProgram<p3::Scenario> program;
+/// hw2-p3, described once: programs::run_program() is its main.
+programs::ScenarioProgram<p3::Scenario> program() {
+  programs::ScenarioProgram<p3::Scenario> program;
   program.name = "hw2-p3";
   program.problem = "3";
   program.heading =
@@ -118,4 +120,4 @@ cli::ScenarioProgram<p3::Scenario> program() {
 
 }  // namespace
 
-int main(int argc, char** argv) { return cli::run_program(argc, argv, program()); }
+int main(int argc, char** argv) { return programs::run_program(argc, argv, program()); }

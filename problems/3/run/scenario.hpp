@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "opspace/model/catalogue.hpp"
-#include "problems/3/contract.hpp"
+#include <problems/3/contract.hpp>
 #include "opspace/math/constants.hpp"
 #include <problems/2/run/scenario.hpp>
 #include "opspace/scenarios/summary.hpp"

@@ -1,15 +1,15 @@
 // Graded tests of problem 4's analysis (questions i-iv): at theta = (0, 90 deg, 0) and at random
 // members of the arm's singular families, against closed forms of the geometry (derived below
 // and in guide.md), from the library's Jv, Jw and Hessians of the tip.
-#include <opspace/math/constants.hpp>
-#include <opspace/model/urdf.hpp>
+#include "opspace/math/constants.hpp"
+#include "opspace/model/urdf.hpp"
 #include <problems/4/run/scenario.hpp>
 
 #include <cmath>
 #include <cstdio>
 
 #include "analysis.hpp"
-#include "problems/4/tests.hpp"
+#include <problems/4/tests.hpp>
 #include "grader/suite/random.hpp"
 
 namespace opspace::grading {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <opspace/model/model.hpp>
+#include "opspace/model/model.hpp"
 
 #include "judge/grading.hpp"
 

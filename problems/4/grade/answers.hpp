@@ -6,7 +6,7 @@
 /// Gradescope image keeps this file.
 #pragma once
 
-#include <opspace/algorithms/singularity.hpp>
+#include "opspace/algorithms/singularity.hpp"
 
 #include "run/api.hpp"
 

@@ -4,9 +4,9 @@
 //   closed loop on the Bullet simulation, beside the plain operational-space controller,
 //   measured only on the problem set's law: every tick of the run is compared with the law's
 //   oracle at the same State and Goal (law_pin.hpp).
-#include <opspace/math/constants.hpp>
+#include "opspace/math/constants.hpp"
 #include <problems/4/run/scenario.hpp>
-#include <opspace/model/urdf.hpp>
+#include "opspace/model/urdf.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -19,7 +19,7 @@
 #include "judge/oracles.hpp"
 #include "run_figure.hpp"
 #include "judge/graded_suite.hpp"
-#include "problems/4/tests.hpp"
+#include <problems/4/tests.hpp>
 #include "grader/suite/random.hpp"
 
 namespace opspace::grading {

@@ -1,13 +1,13 @@
 // Known mistakes of problem 4. Each replaces one function, or wraps the law it is given (the
 // reference solutions, or the grader's oracle).
 #include <problems/4/contract.hpp>
-#include <opspace/algorithms/linalg.hpp>
+#include "opspace/algorithms/linalg.hpp"
 #include <problems/4/run/scenario.hpp>
 
 #include <cmath>
 
 #include "judge/mistakes.hpp"
-#include "problems/4/tests.hpp"
+#include <problems/4/tests.hpp>
 
 namespace opspace::grading {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace cli {
+namespace opspace::programs {
 
 int parse_p4(int argc, char** argv, int (*usage)(const char*, int), P4Command& command) {
   using opspace::hw2::p4::Target;
@@ -24,4 +24,4 @@ int parse_p4(int argc, char** argv, int (*usage)(const char*, int), P4Command& c
   return parse(argc, argv, 1, program, command.options);
 }
 
-}  // namespace cli
+}  // namespace opspace::programs

@@ -1,4 +1,4 @@
-// hw2-p4's command line (problem 4's program): the targets of question v, then cli::parse()'s
+// hw2-p4's command line (problem 4's program): the targets of question v, then programs::parse()'s
 // options. tests/apps/test_cli.cpp checks it and tests/fuzz/fuzz_cli.cpp fuzzes it.
 #pragma once
 
@@ -6,9 +6,9 @@
 
 #include <problems/4/contract.hpp>
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
 
-namespace cli {
+namespace opspace::programs {
 
 /// hw2-p4's command line: z, y or all (the last one given counts) and parse()'s options but
 /// --csv (each run names its own log).
@@ -21,4 +21,4 @@ struct P4Command {
 /// Parses hw2-p4's argv into `command` (usage: the program's); returns as parse() does.
 int parse_p4(int argc, char** argv, int (*usage)(const char*, int), P4Command& command);
 
-}  // namespace cli
+}  // namespace opspace::programs

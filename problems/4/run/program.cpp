@@ -10,21 +10,23 @@
 #include <vector>
 
 #include <problems/4/contract.hpp>
-#include <opspace/math/constants.hpp>
+#include "opspace/math/constants.hpp"
 #include <problems/4/run/scenario.hpp>
 #include <problems/4/run/pictures.hpp>
-#include <opspace/scenarios/watchdog.hpp>
-#include <opspace/visuals/visuals.hpp>
-#include <opspace/model/urdf.hpp>
+#include "opspace/scenarios/watchdog.hpp"
+#include "opspace/visuals/visuals.hpp"
+#include "opspace/model/urdf.hpp"
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
 #include "command.hpp"
 #include "reference_runs.hpp"
 
 #ifdef OPSPACE_LIVE
 #include <problems/4/run/lab.hpp>
 
-#include <opspace/programs/live.hpp>
+#include "opspace/programs/live.hpp"
+
+namespace programs = opspace::programs;
 #endif
 
 namespace {
@@ -40,10 +42,10 @@ int usage(const char* program, int code) {
       << "  z    question v: move the tip 10 cm down along Z0 (elbow lock)\n"
       << "  y    question v: move the tip 10 cm along Y0 (overhead lock)\n"
       << "  all  both (default)\n"
-      << "  --duration  simulated seconds per run (default " << p4::kDuration << ", at most " << cli::kMaxDuration << ")\n"
-      << "Logs: out/" << cli::program_name(program) << "-<z|y>.csv (the controller), out/" << cli::program_name(program)
+      << "  --duration  simulated seconds per run (default " << p4::kDuration << ", at most " << programs::kMaxDuration << ")\n"
+      << "Logs: out/" << programs::program_name(program) << "-<z|y>.csv (the controller), out/" << programs::program_name(program)
       << "-<z|y>-plain.csv in the repository;\n"
-      << "plots and a 3D replay page out/" << cli::program_name(program) << "-<z|y>-* next to them (docs/visuals.md)\n"
+      << "plots and a 3D replay page out/" << programs::program_name(program) << "-<z|y>-* next to them (docs/visuals.md)\n"
       << "  --live      question v live in the browser toward z (or y if named first): drag the arm, switch to\n"
       << "              the plain law (docs/live.md); until Ctrl-C, or --duration. --port N: its port\n";
   return code;
@@ -88,7 +90,7 @@ void questions_i_to_iv() {
   opspace::Data data(rrr);
   const hw::Kinematics k = p4::kinematics(rrr, data, p4::singular_q());
   std::cout << "questions i-iv at theta = (0, 90 deg, 0), tip at " << vec(k.x) << " m\n";
-  cli::Verdict table("reference", "your answer", "");
+  programs::Verdict table("reference", "your answer", "");
   table.section("");
   const int dof = hw::degrees_of_freedom(k);
   table.row("i. tip degrees of freedom", std::to_string(dof), "", std::to_string(reference::p4_degrees_of_freedom()),
@@ -127,29 +129,29 @@ void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain
   const p4::Summary ref = reference::p4(target);
   std::cout << "\nquestion v, " << p4::describe(target) << ": target " << vec(p4::goal(target).x_d) << " m\n";
   if (std::abs(duration - reference::kP4Duration) > 1e-9) {
-    std::cout << "note: the grader and the reference run " << cli::show(reference::kP4Duration, cli::kSeconds)
-              << "; over " << cli::show(duration, cli::kSeconds) << " the comparison below is only indicative\n";
+    std::cout << "note: the grader and the reference run " << programs::show(reference::kP4Duration, programs::kSeconds)
+              << "; over " << programs::show(duration, programs::kSeconds) << " the comparison below is only indicative\n";
   }
-  cli::Verdict table(cli::reference_heading(reference::kP4Duration), "your controller");
+  programs::Verdict table(programs::reference_heading(reference::kP4Duration), "your controller");
   table.section("");
   const bool reached = s.reach_time >= 0 && s.reach_time <= p4::kReachTimeMax;
-  table.row("reached within " + cli::show(p4::kReachTolerance, cli::kMm) + " from", reach(s),
-            "<= " + cli::show_bound(p4::kReachTimeMax, cli::kSeconds), reach(ref), reached ? "ok" : "MISSES");
-  table.shown("final error", s.final_error, ref.final_error, cli::kMm);
-  table.row("peak joint torque", cli::show(s.peak_torque, cli::kNewtonMetre) + cli::joint(s.peak_torque_joint),
-            "<= " + cli::show_bound(p4::kPeakTorqueMax, cli::kNewtonMetre),
-            cli::show(ref.peak_torque, cli::kNewtonMetre) + cli::joint(ref.peak_torque_joint),
+  table.row("reached within " + programs::show(p4::kReachTolerance, programs::kMm) + " from", reach(s),
+            "<= " + programs::show_bound(p4::kReachTimeMax, programs::kSeconds), reach(ref), reached ? "ok" : "MISSES");
+  table.shown("final error", s.final_error, ref.final_error, programs::kMm);
+  table.row("peak joint torque", programs::show(s.peak_torque, programs::kNewtonMetre) + programs::joint(s.peak_torque_joint),
+            "<= " + programs::show_bound(p4::kPeakTorqueMax, programs::kNewtonMetre),
+            programs::show(ref.peak_torque, programs::kNewtonMetre) + programs::joint(ref.peak_torque_joint),
             s.peak_torque <= p4::kPeakTorqueMax ? "ok" : "MISSES");
   table.shown("torques clamped to limits", static_cast<double>(s.clamped_steps), static_cast<double>(ref.clamped_steps),
-              cli::kJointSteps);
+              programs::kJointSteps);
   table.row("final joint angles (deg)", final_q(mine), "not graded",
             vec(reference::p4_final_q(target) * 180.0 / opspace::kPi, 1));
   table.print(std::cout, "bash scripts/grade --problem 4 says which test and why");
   const p4::Summary& p = plain.summary;
   std::cout << "the plain controller from the same start (the library's, not yours): reached " << reach(p)
-            << ", final error " << cli::show(p.final_error, cli::kMm) << ",\n  peak torque "
-            << cli::show(p.peak_torque, cli::kNewtonMetre) << cli::joint(p.peak_torque_joint) << ", "
-            << cli::show(static_cast<double>(p.clamped_steps), cli::kJointSteps) << " clamped, final q "
+            << ", final error " << programs::show(p.final_error, programs::kMm) << ",\n  peak torque "
+            << programs::show(p.peak_torque, programs::kNewtonMetre) << programs::joint(p.peak_torque_joint) << ", "
+            << programs::show(static_cast<double>(p.clamped_steps), programs::kJointSteps) << " clamped, final q "
             << final_q(plain) << " deg\n  expected: without the self-motion potential "
             << (target == Target::kAlongZ0 ? "it needs torques beyond the limits"
                                            : "the arm's plane never turns toward Y0")
@@ -161,30 +163,30 @@ void side_by_side(Target target, const p4::Result& mine, const p4::Result& plain
 }  // namespace
 
 int main(int argc, char** argv) {
-  cli::P4Command command;
+  programs::P4Command command;
   command.options.run.duration = p4::kDuration;
-  const int code = cli::parse_p4(argc, argv, &usage, command);
+  const int code = programs::parse_p4(argc, argv, &usage, command);
   if (code >= 0) return code;
-  cli::Options& options = command.options;
-  if (!cli::watchdog_from_environment(argv[0], options)) return 2;
-  cli::start_replay(options, "4", p4::Scenario::kGradedDuration);
+  programs::Options& options = command.options;
+  if (!programs::watchdog_from_environment(argv[0], options)) return 2;
+  programs::start_replay(options, "4", p4::Scenario::kGradedDuration);
   std::cout << "problem 4, 3R elbow arm (" << OPSPACE_GRADED_LIBRARY << ")\n";
   if (options.live) {  // question v toward the first target named (z by default)
 #ifdef OPSPACE_LIVE
-    return cli::guarded(argv[0], [&] {
+    return programs::guarded(argv[0], [&] {
       const Target target = command.targets.front();
       opspace::live::P4Lab lab("hw2-p4", target, &hw::control);
-      const std::string prefix = cli::output_path(cli::program_name(argv[0]) + (target == Target::kAlongZ0 ? "-z" : "-y"));
-      return cli::serve_live(
+      const std::string prefix = programs::output_path(programs::program_name(argv[0]) + (target == Target::kAlongZ0 ? "-z" : "-y"));
+      return programs::serve_live(
           lab, options, prefix,
           [&] { return p4::figures(target, lab.result(), lab.result()); },
           [&] { return p4::replay_scene(target, lab.result(), lab.result()); });
     });
 #else
-    return cli::no_live(argv[0]);
+    return programs::no_live(argv[0]);
 #endif
   }
-  return cli::guarded(argv[0], [&] {
+  return programs::guarded(argv[0], [&] {
     {
       // Your functions of questions i-iv run outside any closed loop: watched as one step.
       opspace::scenarios::Watchdog watchdog(options.run.watchdog, "problem 4, questions i-iv");
@@ -195,7 +197,7 @@ int main(int argc, char** argv) {
       const std::string name = target == Target::kAlongZ0 ? "z" : "y";
       options.run.progress = &std::cerr;
       options.run.label = "hw2-p4";
-      const std::string prefix = cli::output_path(cli::program_name(argv[0]) + "-" + name);
+      const std::string prefix = programs::output_path(programs::program_name(argv[0]) + "-" + name);
       options.run.csv_path = prefix + ".csv";
       const p4::Result mine = p4::run(target, &hw::control, options.run);
       options.run.csv_path = prefix + "-plain.csv";
@@ -204,10 +206,10 @@ int main(int argc, char** argv) {
       std::cout << "  logs: " << prefix << ".csv, " << prefix << "-plain.csv\n";
       // --test: the value the report's figure ends with (problems/4/grade/graded.cpp)
       if (!mine.samples.empty())
-        cli::print_final(options, "tip error |x - x_d| " + p4::describe(target), p4::tip_error(target, mine.samples.back()), "m");
+        programs::print_final(options, "tip error |x - x_d| " + p4::describe(target), p4::tip_error(target, mine.samples.back()), "m");
       // After the runs: drawing never slows the control loop.
       if (!mine.samples.empty()) {
-        cli::publish(
+        programs::publish(
             options, prefix, [&] { return p4::figures(target, mine, plain); },
             [&] { return p4::replay_scene(target, mine, plain); });
       }

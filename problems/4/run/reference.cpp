@@ -10,10 +10,12 @@
 #include <vector>
 
 #include <problems/4/contract.hpp>
-#include <opspace/math/constants.hpp>
-#include <opspace/model/urdf.hpp>
-#include <opspace/programs/reference_text.hpp>
+#include "opspace/math/constants.hpp"
+#include "opspace/model/urdf.hpp"
+#include "opspace/programs/reference_text.hpp"
 #include <problems/4/run/scenario.hpp>
+
+namespace programs = opspace::programs;
 
 namespace {
 
@@ -41,10 +43,10 @@ Runs run_targets() {
 }
 
 #define OPSPACE_MEMBER(s, m) set(#m, s.m)
-void members(cli::Assignments& set, const p4::Summary& s) {
+void members(programs::Assignments& set, const p4::Summary& s) {
   OPSPACE_MEMBER(s, final_error);
   OPSPACE_MEMBER(s, reach_time);
-  cli::run_totals(set, s);
+  programs::run_totals(set, s);
 }
 #undef OPSPACE_MEMBER
 
@@ -56,7 +58,7 @@ std::string directions(const hw::Directions& d) {
   std::ostringstream s;
   s << "{" << d.count << ", (Eigen::Matrix3d() << ";
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) s << (i || j ? ", " : "") << cli::exact(d.u(i, j));
+    for (int j = 0; j < 3; ++j) s << (i || j ? ", " : "") << programs::exact(d.u(i, j));
   }
   s << ").finished()}";
   return s.str();
@@ -91,26 +93,26 @@ std::string declarations(const Runs& runs) {
   std::vector<std::pair<std::string, p4::Summary>> targets;
   for (const auto& [target, r] : runs.law) targets.emplace_back(target_condition(target), r.summary);
   out << "/// solutions/' run of question v toward `target`.\n";
-  cli::summary_function(out, "p4(opspace::hw2::p4::Target target)", "opspace::scenarios::p4::Summary", targets,
+  programs::summary_function(out, "p4(opspace::hw2::p4::Target target)", "opspace::scenarios::p4::Summary", targets,
                         &members);
   out << "/// The joint angles at the end of that run (rad).\n"
       << "inline Eigen::Vector3d p4_final_q(opspace::hw2::p4::Target target) {\n";
   for (const auto& [target, r] : runs.law) {
-    out << "  if (" << target_condition(target) << ") return " << cli::exact(r.samples.back().q) << ";\n";
+    out << "  if (" << target_condition(target) << ") return " << programs::exact(r.samples.back().q) << ";\n";
   }
   out << "  return Eigen::Vector3d::Zero();\n}\n\n";
   answers(out);
   return out.str();
 }
 
-std::string reach(const p4::Summary& s) { return s.reach_time < 0 ? "never" : cli::show(s.reach_time, cli::kSeconds); }
+std::string reach(const p4::Summary& s) { return s.reach_time < 0 ? "never" : programs::show(s.reach_time, programs::kSeconds); }
 
 std::string fragment(const Runs& runs) {
-  using cli::show;
+  using programs::show;
   constexpr double kDegPerRad = 180.0 / opspace::kPi;
   std::ostringstream out;
-  out << "Measured with `hw2-p4-sol` over " << show(p4::kDuration, cli::kSeconds)
-      << " (\"reached\" = from when on the tip stays within " << show(p4::kReachTolerance, cli::kMm)
+  out << "Measured with `hw2-p4-sol` over " << show(p4::kDuration, programs::kSeconds)
+      << " (\"reached\" = from when on the tip stays within " << show(p4::kReachTolerance, programs::kMm)
       << " of x_d):\n\n| run | reached | final error | peak torque requested | clamped | final q (deg) |\n"
       << "|---|---|---|---|---|---|\n";
   for (Target target : kTargets) {
@@ -119,9 +121,9 @@ std::string fragment(const Runs& runs) {
       const p4::Summary& s = r.summary;
       const Eigen::Vector3d q = r.samples.back().q * kDegPerRad;
       out << "| " << (target == Target::kAlongZ0 ? "Z0" : "Y0") << (plain ? ", plain" : ", question v") << " | "
-          << reach(s) << " | " << show(s.final_error, cli::kMm) << " | " << show(s.peak_torque, cli::kNewtonMetre)
-          << cli::joint(s.peak_torque_joint) << " | " << show(static_cast<double>(s.clamped_steps), cli::kJointSteps)
-          << " | (" << cli::fixed(q(0), 1) << ", " << cli::fixed(q(1), 1) << ", " << cli::fixed(q(2), 1) << ") |\n";
+          << reach(s) << " | " << show(s.final_error, programs::kMm) << " | " << show(s.peak_torque, programs::kNewtonMetre)
+          << programs::joint(s.peak_torque_joint) << " | " << show(static_cast<double>(s.clamped_steps), programs::kJointSteps)
+          << " | (" << programs::fixed(q(0), 1) << ", " << programs::fixed(q(1), 1) << ", " << programs::fixed(q(2), 1) << ") |\n";
     }
   }
   return out.str();
@@ -129,7 +131,7 @@ std::string fragment(const Runs& runs) {
 
 }  // namespace
 
-cli::ReferenceText reference_run_4() {
+programs::ReferenceText reference_run_4() {
   const Runs runs = run_targets();
   return {{"problems/4/contract.hpp", "problems/4/run/scenario.hpp"}, declarations(runs), {{"p4-reference", fragment(runs)}}};
 }

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "problems/4/contract.hpp"
+#include <problems/4/contract.hpp>
 #include "opspace/algorithms/kinematics.hpp"
 #include "opspace/model/catalogue.hpp"
 #include "opspace/model/model.hpp"

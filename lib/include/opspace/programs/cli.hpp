@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
-#include <opspace/visuals/plot.hpp>
-#include <opspace/visuals/replay.hpp>
-#include <opspace/scenarios/common.hpp>
+#include "opspace/visuals/plot.hpp"
+#include "opspace/visuals/replay.hpp"
+#include "opspace/scenarios/common.hpp"
 
-#include <opspace/programs/verdict.hpp>
+#include "opspace/programs/verdict.hpp"
 
-namespace cli {
+namespace opspace::programs {
 
 /// The longest run --duration accepts (simulated seconds): 30 times the longest default (20 s).
 /// A run records one sample per 1 ms step and reserves them all at its start: the limit keeps
@@ -143,4 +143,4 @@ std::string output_path(const std::string& name);
 /// "program: ..." on stderr if the variable is not a number of seconds.
 bool watchdog_from_environment(const char* program, Options& options);
 
-}  // namespace cli
+}  // namespace opspace::programs

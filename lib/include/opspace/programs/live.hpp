@@ -6,12 +6,12 @@
 #include <iostream>
 #include <string>
 
-#include <opspace/live/lab.hpp>
-#include <opspace/live/run.hpp>
+#include "opspace/live/lab.hpp"
+#include "opspace/live/run.hpp"
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
 
-namespace cli {
+namespace opspace::programs {
 
 /// Serves `lab` live (port, duration from `options`; log at `prefix`-live.csv), then publishes
 /// the last run's `figures()` and `scene()` at `prefix`-live-*; returns the exit code.
@@ -29,8 +29,8 @@ int serve_live(Lab& lab, const Options& options, const std::string& prefix, Figu
             << " (the whole session: pushes, laws, gains and resets as columns)\n";
   if (lab.result().samples.empty()) return 0;
   std::cout << "the pictures below show the last run (since the last reset)\n";
-  cli::publish(options, prefix + "-live", figures, scene);
+  programs::publish(options, prefix + "-live", figures, scene);
   return 0;
 }
 
-}  // namespace cli
+}  // namespace opspace::programs

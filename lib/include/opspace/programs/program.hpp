@@ -11,20 +11,20 @@
 #include <string>
 #include <vector>
 
-#include <opspace/scenarios/loop.hpp>
-#include <opspace/visuals/plot.hpp>
-#include <opspace/visuals/replay.hpp>
-#include <opspace/visuals/visuals.hpp>
+#include "opspace/scenarios/loop.hpp"
+#include "opspace/visuals/plot.hpp"
+#include "opspace/visuals/replay.hpp"
+#include "opspace/visuals/visuals.hpp"
 
-#include <opspace/programs/cli.hpp>
+#include "opspace/programs/cli.hpp"
 
 #ifdef OPSPACE_LIVE
-#include <opspace/live/loop_lab.hpp>
+#include "opspace/live/loop_lab.hpp"
 
-#include <opspace/programs/live.hpp>
+#include "opspace/programs/live.hpp"
 #endif
 
-namespace cli {
+namespace opspace::programs {
 
 /// A program of one scenario, described once.
 template <class Scenario>
@@ -105,4 +105,4 @@ int run_program(int argc, char** argv, const ScenarioProgram<Scenario>& program)
   return run_parsed(argv[0], options, program);
 }
 
-}  // namespace cli
+}  // namespace opspace::programs

@@ -14,11 +14,11 @@
 
 #include <Eigen/Core>
 
-#include <opspace/programs/verdict.hpp>
-#include <opspace/scenarios/common.hpp>
-#include <opspace/scenarios/summary.hpp>
+#include "opspace/programs/verdict.hpp"
+#include "opspace/scenarios/common.hpp"
+#include "opspace/scenarios/summary.hpp"
 
-namespace cli {
+namespace opspace::programs {
 
 /// One problem's reference run, written out.
 struct ReferenceText {
@@ -111,4 +111,4 @@ std::string max_rms(double max, double rms, const Unit& unit, Show number = &sho
 /// "12.3 N m (joint 2), none clamped" or "..., 5 joint-steps clamped".
 std::string torque(double peak, int joint, long clamped, Show number = &show);
 
-}  // namespace cli
+}  // namespace opspace::programs

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include <opspace/math/constants.hpp>
+#include "opspace/math/constants.hpp"
 
-namespace cli {
+namespace opspace::programs {
 
 /// How a quantity is shown: its SI value times `scale`, followed by `name`.
 struct Unit {
@@ -74,4 +74,4 @@ class Verdict {
 /// " (joint 3)" for the 0-based joint index 2.
 std::string joint(int index);
 
-}  // namespace cli
+}  // namespace opspace::programs
