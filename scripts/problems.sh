@@ -15,6 +15,15 @@ done < "$(dirname "${BASH_SOURCE[0]}")/../problems.txt"
 unset opspace_key opspace_points
 OPSPACE_PROBLEMS="$(cd "$(dirname "${BASH_SOURCE[0]}")/../problems" && pwd)"
 
+# opspace_points KEY: problem KEY's points on stdout; exit status 1 if the list has no KEY.
+opspace_points() {
+  local i
+  for i in "${!OPSPACE_KEYS[@]}"; do
+    [ "${OPSPACE_KEYS[$i]}" != "$1" ] || { echo "${OPSPACE_POINTS[$i]}"; return 0; }
+  done
+  return 1
+}
+
 # opspace_stubs_untouched DIR: whether DIR holds each problem's exercise file exactly as shipped
 # (its SHA-256 in problems/<key>/stub.sha256). Exit status 0 if so.
 opspace_stubs_untouched() {

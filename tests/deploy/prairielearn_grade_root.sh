@@ -25,9 +25,7 @@ repo=$1 work=$2 grader=$3
 source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
 checker="$repo/tests/deploy/check_prairielearn.cmake"
 key=1b
-points=""
-for i in "${!OPSPACE_KEYS[@]}"; do [ "${OPSPACE_KEYS[$i]}" = "$key" ] && points=${OPSPACE_POINTS[$i]}; done
-[ -n "$points" ] || fail "problems.txt has no problem $key"
+points=$(opspace_points "$key") || fail "problems.txt has no problem $key"
 
 if [ "$(id -u)" -ne 0 ]; then
   echo "SKIPPED: not root: a private mount namespace with /grade bind-mounted needs root (unshare -m)"

@@ -20,9 +20,9 @@
 
 #ifdef OPSPACE_LIVE
 #include <problems/1b/run/lab.hpp>
+#endif
 
 namespace programs = opspace::programs;
-#endif
 
 namespace {
 

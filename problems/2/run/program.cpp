@@ -16,9 +16,9 @@
 
 #ifdef OPSPACE_LIVE
 #include <problems/2/run/lab.hpp>
+#endif
 
 namespace programs = opspace::programs;
-#endif
 
 namespace {
 

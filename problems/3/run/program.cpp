@@ -17,9 +17,9 @@
 
 #ifdef OPSPACE_LIVE
 #include <problems/3/run/lab.hpp>
+#endif
 
 namespace programs = opspace::programs;
-#endif
 
 namespace {
 

@@ -25,9 +25,9 @@
 #include <problems/4/run/lab.hpp>
 
 #include "opspace/programs/live.hpp"
+#endif
 
 namespace programs = opspace::programs;
-#endif
 
 namespace {
 
