@@ -15,9 +15,8 @@ set -euo pipefail
 repo=$1 work=$2 grader=$3
 # shellcheck source=/dev/null
 source "$(dirname "${BASH_SOURCE[0]}")/../support/script.sh"
-checker="$repo/tests/deploy/check_prairielearn.cmake"
-key=1b
-points=$(opspace_points "$key") || fail "problems.txt has no problem $key"
+# shellcheck source=/dev/null
+source "$(dirname "${BASH_SOURCE[0]}")/prairielearn_check.sh"
 fresh_work "$work"
 
 # grade NAME FILE...: a fresh GRADE root with FILEs in student/ (a FILE a:b is a copied as b),
@@ -35,14 +34,6 @@ grade() {
   cp "$root/results/results.json" "$work/$name.json"
 }
 
-# check NAME ARGS...: WORK/NAME.json checked (check_prairielearn.cmake ARGS); on a failure the
-# entrypoint's own output too, which says what the grader did.
-check() {
-  local name=$1
-  shift
-  cmake -DJSON="$work/$name.json" "$@" -P "$checker" ||
-    { tail -30 "$work/$name.log"; fail "$name: results.json is not what PrairieLearn should get"; }
-}
 
 grade reference "$repo/solutions/p$key.cpp:p$key.cpp"
 check reference -DSCORE=1 -DPOINTS="$points"
